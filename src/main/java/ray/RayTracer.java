@@ -1,0 +1,13 @@
+package ray;
+
+import ray.cli.Ray1Command;
+
+/** The program's entry point: {@code ray1 render [options] SCENE.xml|DIR ...}; see {@link Ray1Command}. */
+public final class RayTracer {
+    private RayTracer() {
+    }
+
+    public static void main(String[] args) {
+        System.exit(Ray1Command.run(args));
+    }
+}

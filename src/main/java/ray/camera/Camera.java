@@ -1,0 +1,75 @@
+package ray.camera;
+
+import ray.Ray;
+import ray.math.Vec3;
+
+/**
+ * A camera turns a point (u, v) of the image, each in [0, 1] with (0, 0) at the lower left,
+ * into the ray that sees it.
+ *
+ * <p>The camera's orthonormal basis follows the course's convention: w points backward
+ * (w = −normalize(viewDir)), u to the right (u = normalize(viewUp × w)), v up (v = w × u).
+ * The image plane spans viewWidth × viewHeight, centered on the view axis.
+ */
+public abstract class Camera {
+    protected Vec3 viewPoint = Vec3.ZERO;
+    protected Vec3 viewDir = new Vec3(0, 0, -1);
+    protected Vec3 viewUp = new Vec3(0, 1, 0);
+    protected double viewWidth = 1.0;
+    protected double viewHeight = 1.0;
+
+    /** The camera basis, set by {@link #complete()}. */
+    protected Vec3 u;
+    protected Vec3 v;
+    protected Vec3 w;
+
+    /**
+     * The ray through image point (imageU, imageV), both in [0, 1], (0, 0) at the lower left.
+     */
+    public abstract Ray generateRay(double imageU, double imageV);
+
+    /** Checks the view and computes the basis; called once every property is set. */
+    public void complete() {
+        if (!(viewDir.lengthSquared() > 0) || !viewDir.isFinite()) {
+            throw new IllegalArgumentException("viewDir must be a nonzero vector, got " + viewDir);
+        }
+        w = viewDir.normalized().negate();
+        Vec3 side = viewUp.cross(w);
+        if (!(side.lengthSquared() > 0) || !side.isFinite()) {
+            throw new IllegalArgumentException("viewUp " + viewUp + " must not be zero or parallel to viewDir " + viewDir);
+        }
+        u = side.normalized();
+        v = w.cross(u);
+    }
+
+    public void setViewPoint(Vec3 viewPoint) {
+        this.viewPoint = viewPoint;
+    }
+
+    public void setViewDir(Vec3 viewDir) {
+        this.viewDir = viewDir;
+    }
+
+    public void setViewUp(Vec3 viewUp) {
+        this.viewUp = viewUp;
+    }
+
+    public void setViewWidth(double viewWidth) {
+        this.viewWidth = requirePositive("viewWidth", viewWidth);
+    }
+
+    public void setViewHeight(double viewHeight) {
+        this.viewHeight = requirePositive("viewHeight", viewHeight);
+    }
+
+    public Vec3 getViewPoint() {
+        return viewPoint;
+    }
+
+    protected static double requirePositive(String name, double value) {
+        if (!(value > 0) || Double.isInfinite(value)) {
+            throw new IllegalArgumentException(name + " must be a positive number, got " + value);
+        }
+        return value;
+    }
+}

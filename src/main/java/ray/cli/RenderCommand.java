@@ -1,0 +1,101 @@
+package ray.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import ray.image.PngWriter;
+import ray.render.RenderResult;
+import ray.render.Renderer;
+import ray.scene.Scene;
+import ray.scene.SceneException;
+import ray.scene.SceneLoader;
+
+/** {@code ray1 render}: renders scenes to PNG files, one line of figures per scene. */
+@Command(name = "render", mixinStandardHelpOptions = true,
+        description = "Renders each scene (a folder means every *.xml in it, recursively) to DIR/<scene-name>.png.")
+public final class RenderCommand implements Callable<Integer> {
+    @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "Output folder (default: ${DEFAULT-VALUE}).")
+    Path output = Path.of("out");
+
+    @Option(names = "--samples", paramLabel = "N", description = "Samples per pixel, overriding the scenes' <samples>.")
+    Integer samples;
+
+    @Option(names = "--threads", paramLabel = "N", description = "Worker threads (default: one per core).")
+    Integer threads;
+
+    @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the figures as JSON to this file.")
+    Path statsFile;
+
+    @Option(names = "--verbose", description = "Show the stack trace of unexpected failures.")
+    boolean verbose;
+
+    @Parameters(arity = "1..*", paramLabel = "SCENE.xml|DIR", description = "Scene files or folders of them.")
+    List<Path> scenes;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public Integer call() throws IOException {
+        if (samples != null && samples < 1) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "--samples must be at least 1, got " + samples);
+        }
+        if (threads != null && threads < 1) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "--threads must be at least 1, got " + threads);
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        List<Path> files = SceneFiles.expand(scenes);
+        if (files.isEmpty()) {
+            err.println("error: no scene files (*.xml) found in " + scenes);
+            return 1;
+        }
+        List<SceneStats> stats = new ArrayList<>();
+        Map<String, Path> written = new HashMap<>();
+        int failures = 0;
+        for (Path file : files) {
+            String name = SceneFiles.nameOf(file);
+            Path previous = written.putIfAbsent(name, file);
+            if (previous != null) {
+                err.println("error: " + file + ": renders to " + output.resolve(name + ".png") + ", as " + previous + " does; rename one");
+                failures++;
+                continue;
+            }
+            try {
+                Scene scene = SceneLoader.load(file);
+                RenderResult result = new Renderer(scene, samples == null ? 0 : samples, threads == null ? 0 : threads).render();
+                PngWriter.write(result.image, scene.getExposure(), output.resolve(name + ".png"));
+                SceneStats s = SceneStats.of(name, scene, result);
+                stats.add(s);
+                out.println(s.summaryLine());
+            } catch (SceneException e) {
+                err.println("error: " + e.getMessage());
+                failures++;
+            } catch (IOException | RuntimeException e) {
+                err.println("error: " + file + ": " + Errors.oneLine(e));
+                if (verbose) {
+                    e.printStackTrace(err);
+                }
+                failures++;
+            }
+            out.flush();
+            err.flush();
+        }
+        if (statsFile != null) {
+            SceneStats.writeJson(stats, statsFile);
+        }
+        if (failures > 0) {
+            err.println(failures + " of " + files.size() + " scenes failed");
+        }
+        return failures == 0 ? 0 : 1;
+    }
+}

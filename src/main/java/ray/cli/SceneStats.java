@@ -1,0 +1,54 @@
+package ray.cli;
+
+import com.google.gson.GsonBuilder;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import ray.render.RenderResult;
+import ray.scene.Scene;
+
+/** The figures of one rendered scene, as printed and as written by {@code --stats}. */
+final class SceneStats {
+    String scene;
+    int width;
+    int height;
+    int samples;
+    int threads;
+    double seconds;
+    Map<String, Long> rays;
+
+    static SceneStats of(String name, Scene scene, RenderResult result) {
+        SceneStats s = new SceneStats();
+        s.scene = name;
+        s.width = scene.getWidth();
+        s.height = scene.getHeight();
+        s.samples = result.samplesPerPixel;
+        s.threads = result.threads;
+        s.seconds = result.seconds;
+        s.rays = result.rays.byKind();
+        return s;
+    }
+
+    String summaryLine() {
+        long total = rays.values().stream().mapToLong(Long::longValue).sum();
+        StringBuilder kinds = new StringBuilder();
+        rays.forEach((kind, count) -> kinds.append(kinds.length() == 0 ? "" : ", ").append(kind).append(' ').append(count));
+        return String.format("%-24s %5dx%-5d %7.2f s  %,12d rays (%s)", scene, width, height, seconds, total, kinds);
+    }
+
+    static void writeJson(List<SceneStats> stats, Path file) throws IOException {
+        String json = new GsonBuilder().setPrettyPrinting().create().toJson(stats);
+        Path parent = file.toAbsolutePath().getParent();
+        Files.createDirectories(parent);
+        Path temporary = Files.createTempFile(parent, "." + file.getFileName(), ".tmp");
+        try {
+            Files.writeString(temporary, json + "\n", StandardCharsets.UTF_8);
+            Files.move(temporary, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        } finally {
+            Files.deleteIfExists(temporary);
+        }
+    }
+}

@@ -1,0 +1,120 @@
+package ray.math;
+
+/**
+ * An affine map p ↦ A·p + b of 3D space (a 4×4 matrix whose last row is 0 0 0 1), used to place
+ * a group's children. Points get the translation, vectors do not, and normals use the inverse
+ * transpose of A so that they stay perpendicular to transformed surfaces.
+ */
+public final class Affine {
+    public static final Affine IDENTITY = new Affine(new double[] {1, 0, 0, 0, 1, 0, 0, 0, 1}, Vec3.ZERO);
+
+    /** Row-major 3×3 linear part. */
+    private final double[] a;
+    private final Vec3 b;
+
+    private Affine(double[] linear, Vec3 translation) {
+        this.a = linear;
+        this.b = translation;
+    }
+
+    public static Affine translation(Vec3 t) {
+        return new Affine(IDENTITY.a, t);
+    }
+
+    public static Affine scale(Vec3 s) {
+        return new Affine(new double[] {s.x, 0, 0, 0, s.y, 0, 0, 0, s.z}, Vec3.ZERO);
+    }
+
+    /** Rotation by {@code degrees} about the coordinate axis {@code axis} (0 = x, 1 = y, 2 = z), right-handed. */
+    public static Affine rotation(int axis, double degrees) {
+        double r = Math.toRadians(degrees);
+        double c = Math.cos(r);
+        double s = Math.sin(r);
+        // Exact values at multiples of 90°, so that rotated boxes keep exactly axis-aligned faces.
+        if (degrees % 90 == 0) {
+            c = Math.rint(c);
+            s = Math.rint(s);
+        }
+        switch (axis) {
+            case 0:
+                return new Affine(new double[] {1, 0, 0, 0, c, -s, 0, s, c}, Vec3.ZERO);
+            case 1:
+                return new Affine(new double[] {c, 0, s, 0, 1, 0, -s, 0, c}, Vec3.ZERO);
+            case 2:
+                return new Affine(new double[] {c, -s, 0, s, c, 0, 0, 0, 1}, Vec3.ZERO);
+            default:
+                throw new IllegalArgumentException("axis must be 0, 1 or 2");
+        }
+    }
+
+    /** The map "first {@code inner}, then this". */
+    public Affine after(Affine inner) {
+        double[] m = new double[9];
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++) {
+                m[3 * r + c] = a[3 * r] * inner.a[c] + a[3 * r + 1] * inner.a[3 + c] + a[3 * r + 2] * inner.a[6 + c];
+            }
+        }
+        return new Affine(m, applyToVector(inner.b).plus(b));
+    }
+
+    public Vec3 applyToPoint(Vec3 p) {
+        return applyToVector(p).plus(b);
+    }
+
+    public Vec3 applyToVector(Vec3 v) {
+        return new Vec3(
+                a[0] * v.x + a[1] * v.y + a[2] * v.z,
+                a[3] * v.x + a[4] * v.y + a[5] * v.z,
+                a[6] * v.x + a[7] * v.y + a[8] * v.z);
+    }
+
+    /** Multiplies by the transpose of the linear part: with {@code inverse()} this maps normals. */
+    public Vec3 applyTransposeToVector(Vec3 v) {
+        return new Vec3(
+                a[0] * v.x + a[3] * v.y + a[6] * v.z,
+                a[1] * v.x + a[4] * v.y + a[7] * v.z,
+                a[2] * v.x + a[5] * v.y + a[8] * v.z);
+    }
+
+    public double determinant() {
+        return a[0] * (a[4] * a[8] - a[5] * a[7])
+                - a[1] * (a[3] * a[8] - a[5] * a[6])
+                + a[2] * (a[3] * a[7] - a[4] * a[6]);
+    }
+
+    /** The inverse map, by the adjugate; throws for a singular map (e.g. a zero scale). */
+    public Affine inverse() {
+        double det = determinant();
+        if (det == 0 || !Double.isFinite(det)) {
+            throw new IllegalArgumentException("the transform is singular (a scale of zero?) and cannot be inverted");
+        }
+        double[] m = {
+            (a[4] * a[8] - a[5] * a[7]) / det, (a[2] * a[7] - a[1] * a[8]) / det, (a[1] * a[5] - a[2] * a[4]) / det,
+            (a[5] * a[6] - a[3] * a[8]) / det, (a[0] * a[8] - a[2] * a[6]) / det, (a[2] * a[3] - a[0] * a[5]) / det,
+            (a[3] * a[7] - a[4] * a[6]) / det, (a[1] * a[6] - a[0] * a[7]) / det, (a[0] * a[4] - a[1] * a[3]) / det,
+        };
+        Affine linearInverse = new Affine(m, Vec3.ZERO);
+        return new Affine(m, linearInverse.applyToVector(b).negate());
+    }
+
+    public boolean isIdentity() {
+        return equals(IDENTITY);
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Affine && java.util.Arrays.equals(a, ((Affine) o).a) && b.equals(((Affine) o).b);
+    }
+
+    @Override
+    public int hashCode() {
+        return java.util.Arrays.hashCode(a) * 31 + b.hashCode();
+    }
+
+    @Override
+    public String toString() {
+        return String.format("[%g %g %g | %g; %g %g %g | %g; %g %g %g | %g]",
+                a[0], a[1], a[2], b.x, a[3], a[4], a[5], b.y, a[6], a[7], a[8], b.z);
+    }
+}

@@ -1,0 +1,201 @@
+package ray.scene;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import ray.surface.MeshData;
+
+/**
+ * Reads the geometry of a Wavefront OBJ file: {@code v}, {@code vn}, {@code vt} and {@code f} in
+ * every index form ({@code 1}, {@code 1/2}, {@code 1//3}, {@code 1/2/3}, negative indices counting
+ * back from the latest vertex). Polygons are split into fans around their first vertex. Grouping,
+ * smoothing and material statements ({@code o g s usemtl mtllib}) and comments are ignored.
+ * Errors name the OBJ file and its own line number.
+ */
+public final class ObjReader {
+    private final Path file;
+    private final DoubleList positions = new DoubleList();
+    private final DoubleList normals = new DoubleList();
+    private int texCoordCount;
+    private final IntList triangles = new IntList();
+    private final IntList triangleNormals = new IntList();
+    private boolean anyNormals;
+    private int lineNumber;
+
+    private ObjReader(Path file) {
+        this.file = file;
+    }
+
+    public static MeshData read(Path file) {
+        return new ObjReader(file).readAll();
+    }
+
+    private MeshData readAll() {
+        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            String line;
+            while ((line = in.readLine()) != null) {
+                lineNumber++;
+                parseLine(line);
+            }
+        } catch (NoSuchFileException e) {
+            throw new SceneException(file, 1, 1, "no such mesh file");
+        } catch (IOException e) {
+            throw new SceneException(file, Math.max(1, lineNumber), 1, "cannot read the mesh file (" + e.getMessage() + ")");
+        }
+        if (triangles.size() == 0) {
+            throw new SceneException(file, Math.max(1, lineNumber), 1, "the mesh has no faces; expected at least one 'f' line");
+        }
+        return new MeshData(positions.toArray(), normals.toArray(), triangles.toArray(),
+                anyNormals ? triangleNormals.toArray() : null);
+    }
+
+    private void parseLine(String raw) {
+        int hash = raw.indexOf('#');
+        String line = (hash >= 0 ? raw.substring(0, hash) : raw).strip();
+        if (line.isEmpty()) {
+            return;
+        }
+        String[] words = line.split("\\s+");
+        switch (words[0]) {
+            case "v":
+                readVector(words, positions, "v x y z");
+                break;
+            case "vn":
+                readVector(words, normals, "vn x y z");
+                break;
+            case "vt":
+                if (words.length < 2) {
+                    throw error("'vt' needs at least one coordinate; expected vt u [v [w]]");
+                }
+                texCoordCount++;
+                break;
+            case "f":
+                readFace(words);
+                break;
+            default:
+                // o, g, s, usemtl, mtllib and other statements carry nothing the renderer uses.
+                break;
+        }
+    }
+
+    private void readVector(String[] words, DoubleList into, String form) {
+        // "v x y z w" is allowed by the format (w is a weight we ignore); so are vertex colors after xyz.
+        if (words.length < 4) {
+            throw error("'" + words[0] + "' needs 3 numbers; expected " + form);
+        }
+        for (int i = 1; i <= 3; i++) {
+            into.add(parseNumber(words[i], form));
+        }
+    }
+
+    private double parseNumber(String word, String form) {
+        try {
+            double value = Double.parseDouble(word);
+            if (Double.isFinite(value)) {
+                return value;
+            }
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        throw error("\"" + word + "\" is not a finite number; expected " + form);
+    }
+
+    private void readFace(String[] words) {
+        int corners = words.length - 1;
+        if (corners < 3) {
+            throw error("a face needs at least 3 vertices, got " + corners);
+        }
+        int[] vertex = new int[corners];
+        int[] normal = new int[corners];
+        boolean faceHasNormals = true;
+        for (int i = 0; i < corners; i++) {
+            String[] parts = words[i + 1].split("/", -1);
+            if (parts.length > 3 || parts[0].isEmpty()) {
+                throw error("\"" + words[i + 1] + "\" is not a face vertex; expected v, v/vt, v//vn or v/vt/vn");
+            }
+            vertex[i] = index(parts[0], positions.size() / 3, "vertex");
+            if (parts.length >= 2 && !parts[1].isEmpty()) {
+                index(parts[1], texCoordCount, "texture coordinate");
+            }
+            if (parts.length == 3 && !parts[2].isEmpty()) {
+                normal[i] = index(parts[2], normals.size() / 3, "normal");
+            } else {
+                faceHasNormals = false;
+            }
+        }
+        anyNormals |= faceHasNormals;
+        for (int k = 1; k + 1 < corners; k++) {
+            triangles.add(vertex[0]);
+            triangles.add(vertex[k]);
+            triangles.add(vertex[k + 1]);
+            // -1 marks a corner without a normal: that triangle is flat-shaded.
+            triangleNormals.add(faceHasNormals ? normal[0] : -1);
+            triangleNormals.add(faceHasNormals ? normal[k] : -1);
+            triangleNormals.add(faceHasNormals ? normal[k + 1] : -1);
+        }
+    }
+
+    /** A 1-based (or negative, relative) OBJ index as a 0-based index, checked against the {@code count} defined so far. */
+    private int index(String word, int count, String what) {
+        int i;
+        try {
+            i = Integer.parseInt(word);
+        } catch (NumberFormatException e) {
+            throw error("\"" + word + "\" is not a " + what + " index; expected an integer");
+        }
+        int zeroBased = i > 0 ? i - 1 : count + i;
+        if (i == 0 || zeroBased < 0 || zeroBased >= count) {
+            throw error(what + " index " + i + " is out of range; expected 1 to " + count + " or -1 to -" + count
+                    + " (" + count + " defined so far)");
+        }
+        return zeroBased;
+    }
+
+    private SceneException error(String problem) {
+        return new SceneException(file, lineNumber, 1, problem);
+    }
+
+    /** A growable array of doubles, so that a large mesh does not box a value per coordinate. */
+    private static final class DoubleList {
+        private double[] values = new double[96];
+        private int size;
+
+        void add(double v) {
+            if (size == values.length) {
+                values = java.util.Arrays.copyOf(values, size * 2);
+            }
+            values[size++] = v;
+        }
+
+        int size() {
+            return size;
+        }
+
+        double[] toArray() {
+            return java.util.Arrays.copyOf(values, size);
+        }
+    }
+
+    private static final class IntList {
+        private int[] values = new int[96];
+        private int size;
+
+        void add(int v) {
+            if (size == values.length) {
+                values = java.util.Arrays.copyOf(values, size * 2);
+            }
+            values[size++] = v;
+        }
+
+        int size() {
+            return size;
+        }
+
+        int[] toArray() {
+            return java.util.Arrays.copyOf(values, size);
+        }
+    }
+}

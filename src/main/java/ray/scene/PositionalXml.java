@@ -1,0 +1,120 @@
+package ray.scene;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import javax.xml.XMLConstants;
+import javax.xml.parsers.DocumentBuilderFactory;
+import javax.xml.parsers.ParserConfigurationException;
+import javax.xml.parsers.SAXParser;
+import javax.xml.parsers.SAXParserFactory;
+import org.w3c.dom.Document;
+import org.w3c.dom.Element;
+import org.xml.sax.Attributes;
+import org.xml.sax.Locator;
+import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
+import org.xml.sax.helpers.DefaultHandler;
+
+/**
+ * Reads an XML file into a DOM whose elements remember where they start, so that every later
+ * error can name a line and column. A DOM parser forgets positions; SAX reports them, so SAX
+ * events build the DOM here.
+ *
+ * <p>Hardened: a DOCTYPE is refused, so no entity can read files, reach the network or expand
+ * without bound ("billion laughs").
+ */
+final class PositionalXml {
+    private static final String POSITION = "ray1.position";
+
+    private PositionalXml() {
+    }
+
+    static Document read(Path file) {
+        byte[] bytes;
+        try {
+            bytes = Files.readAllBytes(file);
+        } catch (NoSuchFileException e) {
+            throw new SceneException(file, 1, 1, "no such file");
+        } catch (IOException e) {
+            throw new SceneException(file, 1, 1, "cannot read the file (" + e.getMessage() + ")");
+        }
+        try {
+            SAXParserFactory factory = SAXParserFactory.newInstance();
+            factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+            factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
+            SAXParser parser = factory.newSAXParser();
+            Document document = DocumentBuilderFactory.newInstance().newDocumentBuilder().newDocument();
+            parser.parse(new java.io.ByteArrayInputStream(bytes), new Builder(document));
+            return document;
+        } catch (SAXParseException e) {
+            String message = e.getMessage();
+            if (message != null && message.contains("DOCTYPE")) {
+                message = "a DOCTYPE is not allowed in a scene file (no entities or external files)";
+            }
+            throw new SceneException(file, Math.max(1, e.getLineNumber()), Math.max(1, e.getColumnNumber()),
+                    "malformed XML: " + message);
+        } catch (SAXException | ParserConfigurationException | IOException e) {
+            throw new SceneException(file, 1, 1, "cannot parse the XML (" + e.getMessage() + ")");
+        }
+    }
+
+    /** Line and column where the element's start tag ends (SAX reports positions there). */
+    static int[] position(Element element) {
+        Object p = element.getUserData(POSITION);
+        return p instanceof int[] ? (int[]) p : new int[] {1, 1};
+    }
+
+    private static final class Builder extends DefaultHandler {
+        private final Document document;
+        private final Deque<Element> open = new ArrayDeque<>();
+        private final StringBuilder text = new StringBuilder();
+        private Locator locator;
+
+        Builder(Document document) {
+            this.document = document;
+        }
+
+        @Override
+        public void setDocumentLocator(Locator locator) {
+            this.locator = locator;
+        }
+
+        @Override
+        public void startElement(String uri, String localName, String qName, Attributes attributes) {
+            flushText();
+            Element element = document.createElement(qName);
+            for (int i = 0; i < attributes.getLength(); i++) {
+                element.setAttribute(attributes.getQName(i), attributes.getValue(i));
+            }
+            element.setUserData(POSITION, new int[] {locator.getLineNumber(), locator.getColumnNumber()}, null);
+            if (open.isEmpty()) {
+                document.appendChild(element);
+            } else {
+                open.peek().appendChild(element);
+            }
+            open.push(element);
+        }
+
+        @Override
+        public void endElement(String uri, String localName, String qName) {
+            flushText();
+            open.pop();
+        }
+
+        @Override
+        public void characters(char[] ch, int start, int length) {
+            text.append(ch, start, length);
+        }
+
+        private void flushText() {
+            if (text.length() > 0 && !open.isEmpty()) {
+                open.peek().appendChild(document.createTextNode(text.toString()));
+            }
+            text.setLength(0);
+        }
+    }
+}

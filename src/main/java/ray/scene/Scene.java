@@ -1,0 +1,125 @@
+package ray.scene;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import ray.camera.Camera;
+import ray.math.Vec3;
+import ray.shading.Lambertian;
+import ray.shading.Light;
+import ray.shading.Shader;
+import ray.surface.Group;
+import ray.surface.Surface;
+
+/** Everything a render needs: camera, image size, lights, surfaces and output settings. */
+public class Scene {
+    private String name = "scene";
+    private Camera camera;
+    private int width;
+    private int height;
+    private double exposure = 1.0;
+    private Vec3 backColor = Vec3.ZERO;
+    private int samples = 1;
+    private final List<Light> lights = new ArrayList<>();
+    private final List<Shader> shaders = new ArrayList<>();
+    private final Group surfaces = new Group();
+
+    public void setCamera(Camera camera) {
+        this.camera = camera;
+    }
+
+    public void setImage(int width, int height) {
+        if (width <= 0 || height <= 0) {
+            throw new IllegalArgumentException("the image size must be two positive integers, got " + width + " " + height);
+        }
+        this.width = width;
+        this.height = height;
+    }
+
+    public void setExposure(double exposure) {
+        if (!(exposure >= 0) || Double.isInfinite(exposure)) {
+            throw new IllegalArgumentException("exposure must be a number ≥ 0, got " + exposure);
+        }
+        this.exposure = exposure;
+    }
+
+    public void setBackColor(Vec3 backColor) {
+        this.backColor = backColor;
+    }
+
+    public void setSamples(int samples) {
+        if (samples <= 0) {
+            throw new IllegalArgumentException("samples must be a positive integer, got " + samples);
+        }
+        this.samples = samples;
+    }
+
+    public void addLight(Light light) {
+        lights.add(light);
+    }
+
+    /** A named shader defined at the top level, for surfaces to reuse by ref. */
+    public void addShader(Shader shader) {
+        shaders.add(shader);
+    }
+
+    public void addSurface(Surface surface) {
+        surfaces.addSurface(surface);
+    }
+
+    /** Checks that the scene can be rendered and gives a white Lambertian to every surface without a shader. */
+    public void complete() {
+        if (camera == null) {
+            throw new IllegalArgumentException("the scene has no <camera>");
+        }
+        if (width == 0) {
+            throw new IllegalArgumentException("the scene has no <image> size (expected <image>width height</image>)");
+        }
+        surfaces.inheritShader(new Lambertian());
+    }
+
+    public String getName() {
+        return name;
+    }
+
+    public void setName(String name) {
+        this.name = name;
+    }
+
+    public Camera getCamera() {
+        return camera;
+    }
+
+    public int getWidth() {
+        return width;
+    }
+
+    public int getHeight() {
+        return height;
+    }
+
+    public double getExposure() {
+        return exposure;
+    }
+
+    public Vec3 getBackColor() {
+        return backColor;
+    }
+
+    public int getSamples() {
+        return samples;
+    }
+
+    public List<Light> getLights() {
+        return Collections.unmodifiableList(lights);
+    }
+
+    public List<Shader> getShaders() {
+        return Collections.unmodifiableList(shaders);
+    }
+
+    /** All surfaces of the scene, as one group. */
+    public Group getSurfaces() {
+        return surfaces;
+    }
+}

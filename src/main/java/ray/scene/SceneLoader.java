@@ -1,0 +1,353 @@
+package ray.scene;
+
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
+import java.lang.reflect.Modifier;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeSet;
+import java.util.regex.Pattern;
+import org.w3c.dom.Element;
+import org.w3c.dom.NamedNodeMap;
+import org.w3c.dom.Node;
+import ray.camera.Camera;
+import ray.math.Vec3;
+import ray.surface.MeshData;
+import ray.surface.Surface;
+
+/**
+ * Loads the course's XML scene format by binding elements to setters: {@code <radius>} calls
+ * {@code setRadius}, {@code <light>} calls {@code addLight}, {@code type="Sphere"} makes a
+ * {@code ray.surface.Sphere} (the package of the setter's parameter type). A new surface or
+ * shader is a new class; the loader does not change.
+ *
+ * <p>A setter's parameter types say how to read the element: numbers ({@code int}, {@code double},
+ * one per parameter: {@code <image>300 200</image>} calls {@code setImage(int, int)}), {@link Vec3}
+ * (three numbers), {@code String}, {@link Path} (resolved against the scene file's folder),
+ * {@link MeshData} (an OBJ file read by {@link ObjReader}), or an object built from the element's
+ * children. Element names match case-insensitively. After an object's properties are set, its
+ * {@code complete()} method, if any, checks it and may return the object to use instead.
+ *
+ * <p>Every error is a {@link SceneException} naming the file, line and column.
+ */
+public final class SceneLoader {
+    private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
+    private static final Pattern INTEGER = Pattern.compile("[+-]?\\d+");
+
+    private final Path file;
+    private final Map<String, Object> named = new HashMap<>();
+
+    private SceneLoader(Path file) {
+        this.file = file;
+    }
+
+    /** Loads and checks a scene; its name is the file name without ".xml". */
+    public static Scene load(Path file) {
+        return new SceneLoader(file).loadScene();
+    }
+
+    private Scene loadScene() {
+        Element root = PositionalXml.read(file).getDocumentElement();
+        if (!root.getTagName().equalsIgnoreCase("scene")) {
+            throw error(root, "the root element is <" + root.getTagName() + ">; expected <scene>");
+        }
+        checkAttributes(root, false);
+        Scene scene = new Scene();
+        String fileName = file.getFileName().toString();
+        scene.setName(fileName.endsWith(".xml") ? fileName.substring(0, fileName.length() - 4) : fileName);
+        setProperties(scene, root);
+        try {
+            scene.complete();
+        } catch (IllegalArgumentException e) {
+            throw error(root, e.getMessage());
+        }
+        return scene;
+    }
+
+    /** Applies each child element of {@code element} to {@code target} through its matching setter or adder. */
+    private void setProperties(Object target, Element element) {
+        for (Node node = element.getFirstChild(); node != null; node = node.getNextSibling()) {
+            if (node.getNodeType() == Node.TEXT_NODE && !node.getTextContent().isBlank()) {
+                throw error(element, "unexpected text \"" + abbreviate(node.getTextContent().strip())
+                        + "\" in <" + element.getTagName() + ">; expected only elements here");
+            }
+            if (node.getNodeType() != Node.ELEMENT_NODE) {
+                continue;
+            }
+            Element property = (Element) node;
+            Method setter = findSetter(target.getClass(), property);
+            Object[] args = readArguments(property, setter);
+            try {
+                setter.invoke(target, args);
+            } catch (InvocationTargetException e) {
+                Throwable cause = e.getCause();
+                if (cause instanceof SceneException) {
+                    throw (SceneException) cause;
+                }
+                throw error(property, "invalid <" + property.getTagName() + ">: " + cause.getMessage());
+            } catch (IllegalAccessException e) {
+                throw error(property, "cannot set <" + property.getTagName() + "> (" + e.getMessage() + ")");
+            }
+        }
+    }
+
+    private Method findSetter(Class<?> type, Element property) {
+        String name = property.getTagName();
+        for (Method m : type.getMethods()) {
+            if (isProperty(m) && propertyName(m).equalsIgnoreCase(name)) {
+                return m;
+            }
+        }
+        TreeSet<String> known = new TreeSet<>();
+        for (Method m : type.getMethods()) {
+            if (isProperty(m)) {
+                known.add(propertyName(m));
+            }
+        }
+        String suggestion = Suggestions.closest(name, known);
+        throw error(property, "unknown element <" + name + "> in " + describe(type)
+                + (suggestion != null ? " (did you mean <" + suggestion + ">?)" : "")
+                + "; expected one of " + String.join(", ", known));
+    }
+
+    private static boolean isProperty(Method m) {
+        String n = m.getName();
+        return (n.startsWith("set") || n.startsWith("add")) && n.length() > 3 && m.getParameterCount() > 0
+                && !Modifier.isStatic(m.getModifiers()) && !n.equals("setName");
+    }
+
+    private static String propertyName(Method m) {
+        String rest = m.getName().substring(3);
+        return Character.toLowerCase(rest.charAt(0)) + rest.substring(1);
+    }
+
+    private static String describe(Class<?> type) {
+        return type == Scene.class ? "<scene>" : "a " + type.getSimpleName();
+    }
+
+    private Object[] readArguments(Element property, Method setter) {
+        Class<?>[] types = setter.getParameterTypes();
+        if (types.length == 1 && isObjectType(types[0])) {
+            checkAttributes(property, true);
+            return new Object[] {buildObject(property, types[0])};
+        }
+        checkAttributes(property, false);
+        String text = textOf(property);
+        if (types.length == 1 && types[0] == Vec3.class) {
+            double[] v = numbers(property, text, 3, "three numbers, e.g. <" + property.getTagName() + ">1 0 -2.5</"
+                    + property.getTagName() + ">");
+            return new Object[] {new Vec3(v[0], v[1], v[2])};
+        }
+        if (types.length == 1 && types[0] == String.class) {
+            return new Object[] {text.strip()};
+        }
+        if (types.length == 1 && types[0] == Path.class) {
+            return new Object[] {resolve(property, text)};
+        }
+        if (types.length == 1 && types[0] == MeshData.class) {
+            return new Object[] {ObjReader.read(resolve(property, text))};
+        }
+        for (Class<?> t : types) {
+            if (t != int.class && t != double.class) {
+                throw new IllegalStateException(setter + " has a parameter type the loader cannot read: " + t);
+            }
+        }
+        boolean allIntegers = types[0] == int.class;
+        String expected = types.length == 1
+                ? (allIntegers ? "an integer" : "a number")
+                : types.length + (allIntegers ? " integers" : " numbers");
+        String[] tokens = tokens(text);
+        if (tokens.length != types.length) {
+            throw error(property, "<" + property.getTagName() + "> has " + count(tokens.length) + "; expected " + expected);
+        }
+        Object[] args = new Object[types.length];
+        for (int i = 0; i < types.length; i++) {
+            if (types[i] == int.class) {
+                if (!INTEGER.matcher(tokens[i]).matches()) {
+                    throw error(property, "\"" + abbreviate(tokens[i]) + "\" in <" + property.getTagName()
+                            + "> is not an integer; expected " + expected);
+                }
+                try {
+                    args[i] = Integer.parseInt(tokens[i]);
+                } catch (NumberFormatException e) {
+                    throw error(property, "\"" + abbreviate(tokens[i]) + "\" in <" + property.getTagName()
+                            + "> is too large; expected " + expected);
+                }
+            } else {
+                args[i] = number(property, tokens[i], expected);
+            }
+        }
+        return args;
+    }
+
+    private double[] numbers(Element property, String text, int n, String expected) {
+        String[] tokens = tokens(text);
+        if (tokens.length != n) {
+            throw error(property, "<" + property.getTagName() + "> has " + count(tokens.length) + "; expected " + expected);
+        }
+        double[] values = new double[n];
+        for (int i = 0; i < n; i++) {
+            values[i] = number(property, tokens[i], expected);
+        }
+        return values;
+    }
+
+    private double number(Element property, String token, String expected) {
+        // Java's parser also takes "NaN", "Infinity", hex floats and a 'd' suffix; a scene takes plain decimals.
+        if (!NUMBER.matcher(token).matches()) {
+            throw error(property, "\"" + abbreviate(token) + "\" in <" + property.getTagName() + "> is not a number; expected "
+                    + expected);
+        }
+        double value = Double.parseDouble(token);
+        if (Double.isInfinite(value)) {
+            throw error(property, "\"" + abbreviate(token) + "\" in <" + property.getTagName() + "> is too large; expected "
+                    + expected);
+        }
+        return value;
+    }
+
+    private static String[] tokens(String text) {
+        String s = text.strip();
+        return s.isEmpty() ? new String[0] : s.split("\\s+");
+    }
+
+    private static String count(int n) {
+        return n == 0 ? "no value" : n == 1 ? "1 value" : n + " values";
+    }
+
+    private Path resolve(Element property, String text) {
+        String path = text.strip();
+        if (path.isEmpty()) {
+            throw error(property, "<" + property.getTagName() + "> is empty; expected a file path");
+        }
+        Path folder = file.toAbsolutePath().getParent();
+        return folder.resolve(path).normalize();
+    }
+
+    private static boolean isObjectType(Class<?> t) {
+        return !t.isPrimitive() && t != String.class && t != Vec3.class && t != Path.class && t != MeshData.class;
+    }
+
+    /** Builds the object an element describes: a reference to a named one, or a new one of its type. */
+    private Object buildObject(Element element, Class<?> baseType) {
+        String ref = element.getAttribute("ref");
+        if (!ref.isEmpty()) {
+            if (element.hasAttribute("type") || element.hasAttribute("name") || hasChildElements(element)) {
+                throw error(element, "<" + element.getTagName() + " ref=\"" + ref
+                        + "\"> reuses a named object and takes no type, name or properties");
+            }
+            Object found = named.get(ref);
+            if (found == null) {
+                throw error(element, "unknown ref \"" + ref + "\"; expected the name of an object defined earlier in the file"
+                        + suggestionAmong(ref, named.keySet()));
+            }
+            if (!baseType.isInstance(found)) {
+                throw error(element, "ref \"" + ref + "\" names a " + found.getClass().getSimpleName() + "; expected a "
+                        + baseType.getSimpleName());
+            }
+            return found;
+        }
+        Class<?> type = resolveType(element, baseType);
+        Object object;
+        try {
+            object = type.getConstructor().newInstance();
+        } catch (ReflectiveOperationException e) {
+            throw error(element, "cannot create a " + type.getSimpleName() + " (" + e + ")");
+        }
+        setProperties(object, element);
+        object = complete(element, object, baseType);
+        String name = element.getAttribute("name");
+        if (!name.isEmpty()) {
+            if (named.containsKey(name)) {
+                throw error(element, "duplicate name \"" + name + "\"; expected each name to be used once");
+            }
+            named.put(name, object);
+        }
+        return object;
+    }
+
+    private Class<?> resolveType(Element element, Class<?> baseType) {
+        String typeName = element.getAttribute("type");
+        if (typeName.isEmpty()) {
+            if (Modifier.isAbstract(baseType.getModifiers())) {
+                throw error(element, "<" + element.getTagName() + "> needs a type attribute; expected one of "
+                        + String.join(", ", KnownTypes.of(baseType)));
+            }
+            return baseType;
+        }
+        String qualified = typeName.contains(".") ? typeName : baseType.getPackageName() + "." + typeName;
+        try {
+            Class<?> type = Class.forName(qualified);
+            if (baseType.isAssignableFrom(type) && !Modifier.isAbstract(type.getModifiers())) {
+                return type;
+            }
+        } catch (ClassNotFoundException e) {
+            // reported below
+        }
+        String suggestion = Suggestions.closest(typeName, KnownTypes.of(baseType));
+        throw error(element, "unknown type \"" + typeName + "\" for <" + element.getTagName() + ">"
+                + (suggestion != null ? " (did you mean \"" + suggestion + "\"?)" : "")
+                + "; expected one of " + String.join(", ", KnownTypes.of(baseType)));
+    }
+
+    private Object complete(Element element, Object object, Class<?> baseType) {
+        try {
+            if (object instanceof Surface) {
+                return ((Surface) object).complete();
+            }
+            if (object instanceof Camera) {
+                ((Camera) object).complete();
+            }
+            return object;
+        } catch (IllegalArgumentException e) {
+            throw error(element, "invalid " + object.getClass().getSimpleName() + ": " + e.getMessage());
+        }
+    }
+
+    private void checkAttributes(Element element, boolean objectElement) {
+        NamedNodeMap attributes = element.getAttributes();
+        for (int i = 0; i < attributes.getLength(); i++) {
+            String attribute = attributes.item(i).getNodeName();
+            boolean allowed = objectElement && (attribute.equals("type") || attribute.equals("name") || attribute.equals("ref"));
+            if (!allowed) {
+                throw error(element, "unknown attribute " + attribute + " on <" + element.getTagName() + ">; expected "
+                        + (objectElement ? "type, name or ref" : "no attributes"));
+            }
+        }
+    }
+
+    private String textOf(Element property) {
+        if (hasChildElements(property)) {
+            throw error(property, "<" + property.getTagName() + "> holds elements; expected only a value");
+        }
+        return property.getTextContent();
+    }
+
+    private static boolean hasChildElements(Element element) {
+        for (Node n = element.getFirstChild(); n != null; n = n.getNextSibling()) {
+            if (n.getNodeType() == Node.ELEMENT_NODE) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static String suggestionAmong(String word, Iterable<String> candidates) {
+        List<String> list = new ArrayList<>();
+        candidates.forEach(list::add);
+        String s = Suggestions.closest(word, list);
+        return s == null ? "" : " (did you mean \"" + s + "\"?)";
+    }
+
+    private static String abbreviate(String s) {
+        return s.length() <= 40 ? s : s.substring(0, 37) + "...";
+    }
+
+    private SceneException error(Element element, String problem) {
+        int[] position = PositionalXml.position(element);
+        return new SceneException(file, position[0], position[1], problem);
+    }
+}

@@ -1,0 +1,59 @@
+package ray.shading;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+
+/**
+ * A glaze over a substrate: a mirror reflection weighted by Schlick's Fresnel approximation,
+ * L = R·L_mirror + (1 − R)·L_substrate, with R = R0 + (1 − R0)(1 − cos θ)^5 and
+ * R0 = ((n − 1)/(n + 1))² (Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", 1994).
+ */
+public class Glazed extends Shader {
+    /** Reflection rays stop after this many bounces; the last one reflects black. */
+    public static final int MAX_DEPTH = 12;
+
+    private double refractiveIndex = 1.5;
+    private Shader substrate = new Lambertian();
+
+    public void setRefractiveIndex(double refractiveIndex) {
+        if (!(refractiveIndex > 0) || Double.isInfinite(refractiveIndex)) {
+            throw new IllegalArgumentException("refractiveIndex must be a positive number, got " + refractiveIndex);
+        }
+        this.refractiveIndex = refractiveIndex;
+    }
+
+    public double getRefractiveIndex() {
+        return refractiveIndex;
+    }
+
+    public void setSubstrate(Shader substrate) {
+        this.substrate = substrate;
+    }
+
+    public Shader getSubstrate() {
+        return substrate;
+    }
+
+    /** Schlick's reflectance for the cosine of the angle between the normal and the eye direction. */
+    public double reflectance(double cosTheta) {
+        double r0 = (refractiveIndex - 1) / (refractiveIndex + 1);
+        r0 *= r0;
+        double m = 1 - Math.min(1, Math.abs(cosTheta));
+        return r0 + (1 - r0) * m * m * m * m * m;
+    }
+
+    @Override
+    public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
+        Vec3 toEye = towardEye(ray);
+        double cosTheta = hit.normal.dot(toEye);
+        double r = reflectance(cosTheta);
+        Vec3 base = substrate.shade(hit, ray, tracer, depth).times(1 - r);
+        if (depth + 1 > MAX_DEPTH || r == 0) {
+            return base;
+        }
+        // Mirror direction: the eye direction reflected about the normal, 2(n·e)n − e.
+        Vec3 mirror = hit.normal.times(2 * cosTheta).minus(toEye);
+        return base.plus(tracer.radiance(hit, mirror, depth + 1).times(r));
+    }
+}

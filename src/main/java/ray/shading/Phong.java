@@ -1,0 +1,36 @@
+package ray.shading;
+
+import ray.math.Vec3;
+
+/**
+ * Blinn–Phong: L = Σ (kd ⊙ I · max(0, n·l) + ks ⊙ I · max(0, n·h)^p) / r², with the half vector
+ * h = normalize(l + e). As in the course's reference renderer, the specular term is not gated by n·l.
+ */
+public class Phong extends DirectLighting {
+    private Vec3 diffuseColor = Vec3.ONE;
+    private Vec3 specularColor = Vec3.ONE;
+    private double exponent = 1.0;
+
+    public void setDiffuseColor(Vec3 diffuseColor) {
+        this.diffuseColor = diffuseColor;
+    }
+
+    public void setSpecularColor(Vec3 specularColor) {
+        this.specularColor = specularColor;
+    }
+
+    public void setExponent(double exponent) {
+        if (!(exponent >= 0) || Double.isInfinite(exponent)) {
+            throw new IllegalArgumentException("exponent must be a number ≥ 0, got " + exponent);
+        }
+        this.exponent = exponent;
+    }
+
+    @Override
+    protected Vec3 reflectance(Vec3 normal, Vec3 toLight, Vec3 toEye) {
+        Vec3 half = toLight.plus(toEye).normalized();
+        double diffuse = Math.max(0, normal.dot(toLight));
+        double specular = Math.pow(Math.max(0, normal.dot(half)), exponent);
+        return diffuseColor.times(diffuse).plus(specularColor.times(specular));
+    }
+}

@@ -1,0 +1,26 @@
+package ray.shading;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+
+/** Turns a hit into the radiance that leaves it back along the ray. */
+public abstract class Shader {
+    /**
+     * @param hit   the closest hit of {@code ray}
+     * @param ray   the ray that found it (its direction need not be unit length)
+     * @param depth the ray's recursion depth, 0 for camera rays
+     * @return linear RGB radiance toward the ray's origin
+     */
+    public abstract Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth);
+
+    /** Unit vector from the hit toward where the ray came from. */
+    protected static Vec3 towardEye(Ray ray) {
+        return ray.direction.normalized().negate();
+    }
+
+    @Override
+    public String toString() {
+        return getClass().getSimpleName();
+    }
+}

@@ -1,0 +1,52 @@
+package ray.surface;
+
+import ray.math.Vec3;
+
+/**
+ * An axis-aligned box from {@code minPt} to {@code maxPt}, made of 12 triangles wound so that
+ * each face's geometric normal is its outward axis.
+ */
+public class Box extends Group {
+    private Vec3 minPt = Vec3.ZERO;
+    private Vec3 maxPt = Vec3.ONE;
+
+    public void setMinPt(Vec3 minPt) {
+        this.minPt = minPt;
+    }
+
+    public void setMaxPt(Vec3 maxPt) {
+        this.maxPt = maxPt;
+    }
+
+    @Override
+    public Surface complete() {
+        if (!(minPt.x < maxPt.x && minPt.y < maxPt.y && minPt.z < maxPt.z)) {
+            throw new IllegalArgumentException("minPt " + minPt + " must be less than maxPt " + maxPt + " on every axis");
+        }
+        surfaces.clear();
+        // Corner k has x from bit 0, y from bit 1, z from bit 2 (0 = min, 1 = max).
+        Vec3[] c = new Vec3[8];
+        for (int k = 0; k < 8; k++) {
+            c[k] = new Vec3((k & 1) == 0 ? minPt.x : maxPt.x, (k & 2) == 0 ? minPt.y : maxPt.y, (k & 4) == 0 ? minPt.z : maxPt.z);
+        }
+        // Each face as a quad a, b, c, d counter-clockwise seen from outside.
+        int[][] faces = {
+            {0, 4, 6, 2}, // −x
+            {1, 3, 7, 5}, // +x
+            {0, 1, 5, 4}, // −y
+            {2, 6, 7, 3}, // +y
+            {0, 2, 3, 1}, // −z
+            {4, 5, 7, 6}, // +z
+        };
+        for (int[] f : faces) {
+            addSurface(new Triangle(c[f[0]], c[f[1]], c[f[2]]));
+            addSurface(new Triangle(c[f[0]], c[f[2]], c[f[3]]));
+        }
+        return super.complete();
+    }
+
+    @Override
+    public String toString() {
+        return "Box[" + minPt + " to " + maxPt + "]";
+    }
+}

@@ -1,0 +1,49 @@
+package ray.surface;
+
+import ray.math.Vec3;
+
+/**
+ * A triangle mesh, usually read from an OBJ file. Its triangles share their vertex objects, and
+ * use interpolated vertex normals when the file gives them.
+ */
+public class Mesh extends Group {
+    private MeshData data;
+
+    public void setData(MeshData data) {
+        this.data = data;
+    }
+
+    public MeshData getData() {
+        return data;
+    }
+
+    @Override
+    public Surface complete() {
+        if (data == null) {
+            throw new IllegalArgumentException("a mesh needs <data>, the path of an OBJ file");
+        }
+        surfaces.clear();
+        Vec3[] vertices = toVectors(data.positions);
+        Vec3[] normals = data.triangleNormals == null ? null : toVectors(data.normals);
+        int[] tri = data.triangles;
+        for (int k = 0; k < tri.length; k += 3) {
+            int[] tn = data.triangleNormals;
+            // A face without normals (index -1) is flat even in a mesh whose other faces have them.
+            if (normals == null || tn[k] < 0) {
+                addSurface(new Triangle(vertices[tri[k]], vertices[tri[k + 1]], vertices[tri[k + 2]]));
+            } else {
+                addSurface(new Triangle(vertices[tri[k]], vertices[tri[k + 1]], vertices[tri[k + 2]],
+                        normals[tn[k]], normals[tn[k + 1]], normals[tn[k + 2]]));
+            }
+        }
+        return super.complete();
+    }
+
+    private static Vec3[] toVectors(double[] xyz) {
+        Vec3[] v = new Vec3[xyz.length / 3];
+        for (int i = 0; i < v.length; i++) {
+            v[i] = new Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+        }
+        return v;
+    }
+}

@@ -1,0 +1,29 @@
+package ray.surface;
+
+/**
+ * Triangle-mesh data in flat arrays, as a file reader produces it: positions (x, y, z per vertex),
+ * optional normals, and three vertex indices per triangle (with three normal indices when the
+ * faces carry normals).
+ */
+public final class MeshData {
+    public final double[] positions;
+    public final double[] normals;
+    public final int[] triangles;
+    /** Normal indices per triangle corner, or null when the faces carry no normals. */
+    public final int[] triangleNormals;
+
+    public MeshData(double[] positions, double[] normals, int[] triangles, int[] triangleNormals) {
+        this.positions = positions;
+        this.normals = normals;
+        this.triangles = triangles;
+        this.triangleNormals = triangleNormals;
+    }
+
+    public int vertexCount() {
+        return positions.length / 3;
+    }
+
+    public int triangleCount() {
+        return triangles.length / 3;
+    }
+}

@@ -1,0 +1,98 @@
+package ray.surface;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+
+/** A sphere: the points at distance {@code radius} from {@code center}. */
+public class Sphere extends Surface {
+    private Vec3 center = Vec3.ZERO;
+    private double radius = 1.0;
+
+    public Sphere() {
+    }
+
+    public Sphere(Vec3 center, double radius) {
+        setCenter(center);
+        setRadius(radius);
+    }
+
+    public Vec3 getCenter() {
+        return center;
+    }
+
+    public void setCenter(Vec3 center) {
+        this.center = center;
+    }
+
+    public double getRadius() {
+        return radius;
+    }
+
+    public void setRadius(double radius) {
+        if (!(radius > 0) || Double.isInfinite(radius)) {
+            throw new IllegalArgumentException("radius must be a positive number, got " + radius);
+        }
+        this.radius = radius;
+    }
+
+    @Override
+    public boolean intersect(IntersectionRecord out, Ray ray) {
+        // TODO(Task 2): intersect the ray with this sphere.
+        //   1) Put r(t) = p + t·d into |x − center|² = radius² and expand: a t² + b t + c = 0 with
+        //      a = d·d, b = 2 d·(p − center), c = (p − center)·(p − center) − radius².
+        //   2) A negative discriminant b² − 4ac means the ray misses.
+        //   3) Of the two roots, take the smallest t with ray.start < t < ray.end; none means a miss.
+        //   4) On a hit fill out.t, out.location = ray.pointAt(t), out.normal = (location − center)/radius
+        //      and out.surface = this, then return true. On a miss, return false and leave out alone.
+        // BEGIN SOLUTION
+        // The textbook discriminant b² − 4ac cancels catastrophically for small or far spheres.
+        // Ray Tracing Gems ch. 7 computes it from the ray's closest-approach vector instead:
+        // with f = p − c and d̂ = d/|d|, l = f − (f·d̂)d̂ and Δ/(4a) = r² − l·l.
+        Vec3 d = ray.direction;
+        Vec3 f = ray.origin.minus(center);
+        double a = d.dot(d);
+        if (!(a > 0) || Double.isInfinite(a)) {
+            return false;
+        }
+        double halfB = f.dot(d);
+        double c = f.dot(f) - radius * radius;
+        Vec3 unitD = d.times(1 / Math.sqrt(a));
+        Vec3 l = f.minus(unitD.times(f.dot(unitD)));
+        double discriminantOverA = radius * radius - l.dot(l);
+        if (!(discriminantOverA >= 0)) {
+            return false;
+        }
+        // Stable quadratic (Numerical Recipes §5.6): q = −(b' + sign(b')√Δ'), roots q/a and c/q,
+        // so that the root near zero is never the difference of two nearly equal numbers.
+        double rootDelta = Math.sqrt(a) * Math.sqrt(discriminantOverA);
+        double q = -(halfB + Math.copySign(rootDelta, halfB));
+        double t0 = q / a;
+        double t1 = q != 0 ? c / q : t0;
+        double tNear = Math.min(t0, t1);
+        double tFar = Math.max(t0, t1);
+        double t;
+        if (tNear > ray.start && tNear < ray.end) {
+            t = tNear;
+        } else if (tFar > ray.start && tFar < ray.end) {
+            t = tFar;
+        } else {
+            return false;
+        }
+        // Re-project the hit onto the sphere so that its distance from the center is radius
+        // to rounding, whatever the error of t (Ray Tracing Gems ch. 6 and 7).
+        Vec3 outward = ray.pointAt(t).minus(center).normalized();
+        out.t = t;
+        out.location = center.plusScaled(radius, outward);
+        out.normal = outward;
+        out.surface = this;
+        return true;
+        // END SOLUTION
+        // STUB: return false;
+    }
+
+    @Override
+    public String toString() {
+        return "Sphere[center " + center + ", radius " + radius + "]";
+    }
+}
