@@ -36,7 +36,7 @@ final class SceneStats {
         long total = rays.values().stream().mapToLong(Long::longValue).sum();
         StringBuilder kinds = new StringBuilder();
         rays.forEach((kind, count) -> kinds.append(kinds.length() == 0 ? "" : ", ").append(kind).append(' ').append(count));
-        return String.format("%-24s %5dx%-5d %7.2f s  %,12d rays (%s)", scene, width, height, seconds, total, kinds);
+        return String.format(java.util.Locale.ROOT, "%-24s %5dx%-5d %7.2f s  %,12d rays (%s)", scene, width, height, seconds, total, kinds);
     }
 
     static void writeJson(List<SceneStats> stats, Path file) throws IOException {

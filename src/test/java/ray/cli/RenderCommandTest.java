@@ -1,0 +1,135 @@
+package ray.cli;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.regex.Pattern;
+import org.junit.Before;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import ray.image.PngReader;
+
+/** {@code ray1 render} on good scenes: the PNGs it writes, the summary lines and the --stats JSON. */
+public class RenderCommandTest {
+    @Rule
+    public TemporaryFolder folder = new TemporaryFolder();
+
+    private Path root;
+    private Path output;
+
+    @Before
+    public void setUp() {
+        root = folder.getRoot().toPath();
+        output = root.resolve("out");
+    }
+
+    /** The summary line of a 4×4 scene: name, size, seconds, total rays and rays by kind. */
+    private static Pattern summary(String name, long camera, long shadow) {
+        return Pattern.compile(Pattern.quote(name) + " +4x4 +\\d+[.,]\\d\\d s +" + (camera + shadow)
+                + " rays \\(camera " + camera + ", shadow " + shadow + ", reflection 0\\)");
+    }
+
+    @Test
+    public void renderingOneSceneWritesItsPngAndOneSummaryLine() throws Exception {
+        Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
+        CliRun run = CliRun.of("render", "-o", output.toString(), scene.toString());
+
+        assertEquals(run.toString(), 0, run.status);
+        assertEquals(run.toString(), "", run.err);
+        String[] lines = CliRun.lines(run.out);
+        assertEquals(run.toString(), 1, lines.length);
+        assertTrue(lines[0], summary("floor", 16, 16).matcher(lines[0].strip()).matches());
+
+        BufferedImage png = PngReader.read(output.resolve("floor.png"));
+        assertEquals(4, png.getWidth());
+        assertEquals(4, png.getHeight());
+        // The pixel right under the light, (0, 1), is PNG row 2: white Lambertian, I/r² = 4/4 = 1.
+        assertEquals(0xffffff, png.getRGB(0, 2) & 0xffffff);
+        // Pixel (3, 3): r² = 9 + 4 + 4 = 17, L = 8/17^1.5 = 0.11413, floor(255·0.11413^(1/2.2) + ½) = 95.
+        assertEquals(0x5f5f5f, png.getRGB(3, 0) & 0xffffff);
+        run.assertNoStackTrace();
+    }
+
+    @Test
+    public void folderArgumentRendersEveryXmlFileRecursively() throws Exception {
+        CliRun.write(root.resolve("scenes/a.xml"), CliRun.floorScene(""));
+        CliRun.write(root.resolve("scenes/deeper/still/b.xml"), CliRun.floorScene(""));
+        CliRun.write(root.resolve("scenes/notes.txt"), "not a scene");
+        CliRun.write(root.resolve("scenes/deeper/c.xml.bak"), "not a scene either");
+        CliRun run = CliRun.of("render", "-o", output.toString(), root.resolve("scenes").toString());
+
+        assertEquals(run.toString(), 0, run.status);
+        String[] lines = CliRun.lines(run.out);
+        assertEquals(run.toString(), 2, lines.length);
+        assertTrue(lines[0], summary("a", 16, 16).matcher(lines[0].strip()).matches());
+        assertTrue(lines[1], summary("b", 16, 16).matcher(lines[1].strip()).matches());
+        assertTrue(Files.isRegularFile(output.resolve("a.png")));
+        assertTrue(Files.isRegularFile(output.resolve("b.png")));
+        try (var files = Files.list(output)) {
+            assertEquals("nothing else is written", 2, files.count());
+        }
+    }
+
+    @Test
+    public void samplesOptionOverridesTheScene() throws Exception {
+        Path scene = CliRun.write(root.resolve("nine.xml"), CliRun.floorScene("  <samples>9</samples>\n"));
+
+        CliRun asWritten = CliRun.of("render", "-o", output.toString(), scene.toString());
+        assertEquals(asWritten.toString(), 0, asWritten.status);
+        // 3×3 grid: 9·16 = 144 camera rays, each with one shadow ray
+        assertTrue(asWritten.out, summary("nine", 144, 144).matcher(asWritten.out.strip()).matches());
+
+        CliRun overridden = CliRun.of("render", "--samples", "4", "-o", output.toString(), scene.toString());
+        assertEquals(overridden.toString(), 0, overridden.status);
+        assertTrue(overridden.out, summary("nine", 64, 64).matcher(overridden.out.strip()).matches());
+    }
+
+    @Test
+    public void statsFileHoldsOneJsonObjectPerScene() throws Exception {
+        CliRun.write(root.resolve("scenes/first.xml"), CliRun.floorScene(""));
+        CliRun.write(root.resolve("scenes/second.xml"), CliRun.floorScene("  <samples>4</samples>\n"));
+        Path stats = root.resolve("reports/stats.json");
+        CliRun run = CliRun.of("render", "--threads", "3", "--stats", stats.toString(),
+                "-o", output.toString(), root.resolve("scenes").toString());
+        assertEquals(run.toString(), 0, run.status);
+
+        JsonArray array = JsonParser.parseString(Files.readString(stats)).getAsJsonArray();
+        assertEquals(2, array.size());
+        String[] names = {"first", "second"};
+        int[] samples = {1, 4};
+        for (int k = 0; k < 2; k++) {
+            JsonObject s = array.get(k).getAsJsonObject();
+            assertEquals(names[k], s.get("scene").getAsString());
+            assertEquals(4, s.get("width").getAsInt());
+            assertEquals(4, s.get("height").getAsInt());
+            assertEquals(samples[k], s.get("samples").getAsInt());
+            assertEquals("--threads is honoured", 3, s.get("threads").getAsInt());
+            double seconds = s.get("seconds").getAsDouble();
+            assertTrue("seconds " + seconds, seconds >= 0 && seconds < 60);
+            JsonObject rays = s.get("rays").getAsJsonObject();
+            assertEquals(16 * samples[k], rays.get("camera").getAsLong());
+            assertEquals(16 * samples[k], rays.get("shadow").getAsLong());
+            assertEquals(0, rays.get("reflection").getAsLong());
+        }
+        try (var files = Files.list(stats.getParent())) {
+            assertEquals("no temporary file is left beside the stats", 1, files.count());
+        }
+    }
+
+    @Test
+    public void threadsOptionShowsInTheStats() throws Exception {
+        Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
+        Path stats = root.resolve("stats.json");
+        CliRun run = CliRun.of("render", "--threads", "1", "--stats", stats.toString(), "-o", output.toString(), scene.toString());
+        assertEquals(run.toString(), 0, run.status);
+        JsonObject s = JsonParser.parseString(Files.readString(stats)).getAsJsonArray().get(0).getAsJsonObject();
+        assertEquals(1, s.get("threads").getAsInt());
+    }
+}

@@ -1,0 +1,144 @@
+package ray.render;
+
+import static org.junit.Assert.assertEquals;
+import static ray.testing.Asserts.assertVec;
+import static ray.testing.Asserts.v;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Comparator;
+import java.util.List;
+import org.junit.Test;
+import ray.Ray;
+import ray.camera.Camera;
+import ray.scene.Scene;
+import ray.shading.RGBNormals;
+import ray.surface.Triangle;
+
+/**
+ * The pixel loop's sample positions: pixel (i, j), j from the bottom, with N samples asks the camera
+ * for the n×n grid (i + (a + ½)/n)/nx, (j + (b + ½)/n)/ny, n = round(√N), and averages the samples.
+ */
+public class SampleGridTest {
+    private static final double TOL = 1e-12;
+
+    /** Records every image point it is asked for and returns a ray that misses everything. */
+    private static final class RecordingCamera extends Camera {
+        final List<double[]> asked = Collections.synchronizedList(new ArrayList<>());
+
+        @Override
+        public Ray generateRay(double imageU, double imageV) {
+            asked.add(new double[] {imageU, imageV});
+            return new Ray(v(0, 0, 0), v(0, 0, -1));
+        }
+    }
+
+    private static final Comparator<double[]> BY_U_THEN_V =
+            Comparator.<double[]>comparingDouble(p -> p[0]).thenComparingDouble(p -> p[1]);
+
+    private static List<double[]> askedBy(int width, int height, int samples, int threads) {
+        RecordingCamera camera = new RecordingCamera();
+        Scene scene = TestScenes.scene(camera, width, height);
+        scene.complete();
+        new Renderer(scene, samples, threads).render();
+        List<double[]> asked = new ArrayList<>(camera.asked);
+        asked.sort(BY_U_THEN_V);
+        return asked;
+    }
+
+    private static List<double[]> grid(int width, int height, int n) {
+        List<double[]> points = new ArrayList<>();
+        for (int j = 0; j < height; j++) {
+            for (int i = 0; i < width; i++) {
+                for (int a = 0; a < n; a++) {
+                    for (int b = 0; b < n; b++) {
+                        points.add(new double[] {(i + (a + 0.5) / n) / width, (j + (b + 0.5) / n) / height});
+                    }
+                }
+            }
+        }
+        points.sort(BY_U_THEN_V);
+        return points;
+    }
+
+    private static void assertSamePoints(List<double[]> expected, List<double[]> actual) {
+        assertEquals("number of camera rays", expected.size(), actual.size());
+        for (int k = 0; k < expected.size(); k++) {
+            assertEquals("u of sample " + k, expected.get(k)[0], actual.get(k)[0], TOL);
+            assertEquals("v of sample " + k, expected.get(k)[1], actual.get(k)[1], TOL);
+        }
+    }
+
+    @Test
+    public void gridSideIsTheRoundedSquareRoot() {
+        int[][] samplesAndSide = {{1, 1}, {2, 1}, {3, 2}, {4, 2}, {6, 2}, {7, 3}, {9, 3}, {16, 4}, {20, 4}, {21, 5}, {100, 10}};
+        for (int[] c : samplesAndSide) {
+            assertEquals("gridSide(" + c[0] + ")", c[1], Renderer.gridSide(c[0]));
+        }
+        assertEquals("never below one sample", 1, Renderer.gridSide(0));
+    }
+
+    @Test
+    public void oneSampleAsksForEveryPixelCenter() {
+        // A 3×2 image: u in {1/6, 1/2, 5/6}, v in {1/4, 3/4}.
+        List<double[]> asked = askedBy(3, 2, 1, 1);
+        assertSamePoints(grid(3, 2, 1), asked);
+        assertEquals(1.0 / 6, asked.get(0)[0], TOL);
+        assertEquals(0.25, asked.get(0)[1], TOL);
+        assertEquals(5.0 / 6, asked.get(5)[0], TOL);
+        assertEquals(0.75, asked.get(5)[1], TOL);
+    }
+
+    @Test
+    public void fourSamplesAskForTheTwoByTwoGridInEachPixel() {
+        List<double[]> asked = askedBy(3, 2, 4, 1);
+        assertSamePoints(grid(3, 2, 2), asked);
+        // The first column of samples: u = (0 + 0.25)/3, at v = (0 + 0.25)/2, (0 + 0.75)/2, (1 + 0.25)/2, (1 + 0.75)/2.
+        double[] firstColumnV = {0.125, 0.375, 0.625, 0.875};
+        for (int k = 0; k < 4; k++) {
+            assertEquals(0.25 / 3, asked.get(k)[0], TOL);
+            assertEquals(firstColumnV[k], asked.get(k)[1], TOL);
+        }
+    }
+
+    @Test
+    public void threeSamplesRoundToTheTwoByTwoGrid() {
+        assertSamePoints(grid(2, 3, 2), askedBy(2, 3, 3, 1));
+    }
+
+    @Test
+    public void nineSamplesUseAThreeByThreeGridWithManyThreads() {
+        assertSamePoints(grid(4, 3, 3), askedBy(4, 3, 9, 3));
+    }
+
+    @Test
+    public void zeroOverrideUsesTheScenesSamples() {
+        RecordingCamera camera = new RecordingCamera();
+        Scene scene = TestScenes.scene(camera, 2, 2);
+        scene.setSamples(16);
+        scene.complete();
+        RenderResult result = new Renderer(scene, 0, 1).render();
+        assertEquals(16, result.samplesPerPixel);
+        assertEquals(4 * 16, camera.asked.size());
+
+        camera.asked.clear();
+        assertEquals("an explicit count overrides the scene", 1, new Renderer(scene, 1, 1).render().samplesPerPixel);
+        assertEquals(4, camera.asked.size());
+    }
+
+    @Test
+    public void pixelIsTheAverageOfItsSamples() {
+        // One pixel seeing x, y in [−0.5, 0.5]; its 2×2 samples are at x, y = ±0.25. A triangle covers
+        // x ≤ 0 there (its long edge crosses y = ±0.25 near x = −50), so the two left samples see
+        // RGBNormals of +z, (0.5, 0.5, 1), and the two right ones the background.
+        Scene scene = TestScenes.scene(TestScenes.orthographicDown(v(0, 0, 5), 1, 1), 1, 1);
+        Triangle left = new Triangle(v(-100, -100, 0), v(0, -100, 0), v(0, 100, 0));
+        left.setShader(new RGBNormals());
+        scene.addSurface(left.complete());
+        scene.setBackColor(v(0.2, 0.4, 0.6));
+        scene.complete();
+        RenderResult result = new Renderer(scene, 4, 1).render();
+        // ((0.5 + 0.2)/2, (0.5 + 0.4)/2, (1 + 0.6)/2)
+        assertVec(v(0.35, 0.45, 0.8), result.image.get(0, 0), TOL);
+    }
+}
