@@ -98,8 +98,14 @@ public final class Affine {
         return new Affine(m, linearInverse.applyToVector(b).negate());
     }
 
+    /** Exactly the identity (−0.0 counts as 0, as a rotation by 0° produces it). */
     public boolean isIdentity() {
-        return equals(IDENTITY);
+        for (int k = 0; k < 9; k++) {
+            if (a[k] != IDENTITY.a[k]) {
+                return false;
+            }
+        }
+        return b.x == 0 && b.y == 0 && b.z == 0;
     }
 
     @Override

@@ -65,7 +65,18 @@ public final class Vec3 {
     /** This vector scaled to unit length; a zero vector stays zero rather than becoming NaN. */
     public Vec3 normalized() {
         double len = length();
-        return len > 0 ? new Vec3(x / len, y / len, z / len) : this;
+        if (len > 0 && len < Double.POSITIVE_INFINITY) {
+            return new Vec3(x / len, y / len, z / len);
+        }
+        // |v|² underflowed (coordinates below ~1e-154) or overflowed (above ~1e154): divide by the
+        // largest coordinate first, which is exact in direction, then normalize the rescaled vector.
+        double m = maxAbs();
+        if (m > 0 && m < Double.POSITIVE_INFINITY) {
+            Vec3 rescaled = new Vec3(x / m, y / m, z / m);
+            double l = rescaled.length();
+            return new Vec3(rescaled.x / l, rescaled.y / l, rescaled.z / l);
+        }
+        return this;
     }
 
     /** The largest absolute coordinate: the scale that rounding errors of this point grow with. */

@@ -1,0 +1,79 @@
+package ray.camera;
+
+import static ray.camera.PerspectiveCameraTest.assertRay;
+import static ray.testing.Asserts.v;
+
+import org.junit.Test;
+
+/**
+ * Checks OrthographicCamera.generateRay against rays computed by hand from the conventions:
+ * origin = viewPoint + s·u + t·v, direction = −w, with s = (u − ½)·viewWidth and
+ * t = (v − ½)·viewHeight, and a segment from 0 to +∞.
+ */
+public class OrthographicCameraTest {
+    private static OrthographicCamera defaultCamera() {
+        OrthographicCamera camera = new OrthographicCamera();
+        camera.complete();
+        return camera;
+    }
+
+    /**
+     * Looking along +x with +z up from (1,2,3): u = (0,−1,0), v = (0,0,1), −w = (1,0,0).
+     * With viewWidth 4 and viewHeight 2 the origin is (1, 2 − s, 3 + t), s = 4(u − ½), t = 2(v − ½).
+     */
+    private static OrthographicCamera rotatedCamera() {
+        OrthographicCamera camera = new OrthographicCamera();
+        camera.setViewPoint(v(1, 2, 3));
+        camera.setViewDir(v(1, 0, 0));
+        camera.setViewUp(v(0, 0, 1));
+        camera.setViewWidth(4);
+        camera.setViewHeight(2);
+        camera.complete();
+        return camera;
+    }
+
+    @Test
+    public void defaultCameraCenterRayStartsAtViewPoint() {
+        assertRay(v(0, 0, 0), v(0, 0, -1), defaultCamera().generateRay(0.5, 0.5));
+    }
+
+    @Test
+    public void defaultCameraCornerRaysAreParallelAndStartOnTheImagePlaneCorners() {
+        OrthographicCamera camera = defaultCamera();
+        assertRay(v(-0.5, -0.5, 0), v(0, 0, -1), camera.generateRay(0, 0));
+        assertRay(v(0.5, -0.5, 0), v(0, 0, -1), camera.generateRay(1, 0));
+        assertRay(v(-0.5, 0.5, 0), v(0, 0, -1), camera.generateRay(0, 1));
+        assertRay(v(0.5, 0.5, 0), v(0, 0, -1), camera.generateRay(1, 1));
+    }
+
+    @Test
+    public void rotatedCameraCenterRayStartsAtViewPoint() {
+        assertRay(v(1, 2, 3), v(1, 0, 0), rotatedCamera().generateRay(0.5, 0.5));
+    }
+
+    @Test
+    public void rotatedCameraCornerRaysUseItsBasisAndNonSquarePlane() {
+        OrthographicCamera camera = rotatedCamera();
+        // (0,0): s = −2, t = −1 → (1, 4, 2); the other corners flip the signs of s and t.
+        assertRay(v(1, 4, 2), v(1, 0, 0), camera.generateRay(0, 0));
+        assertRay(v(1, 0, 2), v(1, 0, 0), camera.generateRay(1, 0));
+        assertRay(v(1, 4, 4), v(1, 0, 0), camera.generateRay(0, 1));
+        assertRay(v(1, 0, 4), v(1, 0, 0), camera.generateRay(1, 1));
+    }
+
+    @Test
+    public void rotatedCameraOffCenterPointDistinguishesUFromV() {
+        // (0.25, 0.75): s = −1, t = 0.5 → origin (1, 3, 3.5).
+        assertRay(v(1, 3, 3.5), v(1, 0, 0), rotatedCamera().generateRay(0.25, 0.75));
+    }
+
+    @Test
+    public void directionIsUnitViewDirWhateverItsLength() {
+        OrthographicCamera camera = new OrthographicCamera();
+        camera.setViewDir(v(0, -5, 0));
+        camera.setViewUp(v(0, 0, -1));
+        camera.complete();
+        // w = (0,1,0), u = normalize((0,0,−1) × (0,1,0)) = (1,0,0), v = w × u = (0,0,−1).
+        assertRay(v(0.5, 0, 0.5), v(0, -1, 0), camera.generateRay(1, 0));
+    }
+}

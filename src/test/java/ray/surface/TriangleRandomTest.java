@@ -1,0 +1,58 @@
+package ray.surface;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertSame;
+import static org.junit.Assert.assertTrue;
+import static ray.testing.Asserts.assertVec;
+
+import java.util.Random;
+import org.junit.Test;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+
+/**
+ * Property test of Triangle.intersect on seeded random triangles and rays aimed at random interior
+ * points: every ray hits, the barycentrics reproduce the location, and the location lies on the ray.
+ */
+public class TriangleRandomTest {
+    @Test
+    public void barycentricsReproduceTheLocation() {
+        Random random = new Random(31337);
+        for (int i = 0; i < 1000; i++) {
+            Vec3 v0 = randomVec(random, 10);
+            Vec3 v1 = randomVec(random, 10);
+            Vec3 v2 = randomVec(random, 10);
+            Triangle triangle = new Triangle(v0, v1, v2);
+            // An interior point away from the edges, so rounding cannot push it outside.
+            double beta = 0.01 + 0.98 * random.nextDouble();
+            double gamma = (0.99 - beta) * random.nextDouble() + 0.005;
+            Vec3 target = v0.times(1 - beta - gamma).plus(v1.times(beta)).plus(v2.times(gamma));
+            Vec3 origin = randomVec(random, 20);
+            double scale = 0.5 + 2 * random.nextDouble();
+            Ray ray = new Ray(origin, target.minus(origin).times(scale));
+            // Skip rays that graze the triangle's plane: their hit point is ill-conditioned.
+            Vec3 unitDir = ray.direction.normalized();
+            if (Math.abs(unitDir.dot(triangle.getFaceNormal())) < 0.05) {
+                continue;
+            }
+
+            IntersectionRecord out = new IntersectionRecord();
+            String what = "ray " + i + ": " + ray + " at " + triangle;
+            assertTrue(what + " should hit", triangle.intersect(out, ray));
+            assertSame(triangle, out.surface);
+            Vec3 fromBarycentrics = v0.times(1 - out.beta - out.gamma).plus(v1.times(out.beta)).plus(v2.times(out.gamma));
+            assertVec(what, fromBarycentrics, out.location, 1e-10);
+            assertVec(what, ray.pointAt(out.t), out.location, 1e-10);
+            // The ray was aimed at target with direction (target − origin)·scale, so t = 1/scale.
+            assertEquals(what, 1 / scale, out.t, 1e-9);
+            assertVec(what, target, out.location, 1e-9);
+            assertVec(what, triangle.getFaceNormal(), out.normal, 0);
+        }
+    }
+
+    private static Vec3 randomVec(Random random, double extent) {
+        return new Vec3(extent * (2 * random.nextDouble() - 1), extent * (2 * random.nextDouble() - 1),
+                extent * (2 * random.nextDouble() - 1));
+    }
+}
