@@ -148,6 +148,10 @@ public final class ObjReader {
         }
         int zeroBased = i > 0 ? i - 1 : count + i;
         if (i == 0 || zeroBased < 0 || zeroBased >= count) {
+            if (count == 0) {
+                throw error(what + " index " + i + " is out of range; expected a " + what + " defined on an earlier line"
+                        + " (none is defined so far)");
+            }
             throw error(what + " index " + i + " is out of range; expected 1 to " + count + " or -1 to -" + count
                     + " (" + count + " defined so far)");
         }

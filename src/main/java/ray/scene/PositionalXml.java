@@ -13,11 +13,12 @@ import javax.xml.parsers.SAXParser;
 import javax.xml.parsers.SAXParserFactory;
 import org.w3c.dom.Document;
 import org.w3c.dom.Element;
+import org.w3c.dom.Node;
 import org.xml.sax.Attributes;
 import org.xml.sax.Locator;
 import org.xml.sax.SAXException;
 import org.xml.sax.SAXParseException;
-import org.xml.sax.helpers.DefaultHandler;
+import org.xml.sax.ext.DefaultHandler2;
 
 /**
  * Reads an XML file into a DOM whose elements remember where they start, so that every later
@@ -48,7 +49,10 @@ final class PositionalXml {
             factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
             SAXParser parser = factory.newSAXParser();
             Document document = DocumentBuilderFactory.newInstance().newDocumentBuilder().newDocument();
-            parser.parse(new java.io.ByteArrayInputStream(bytes), new Builder(document));
+            Builder builder = new Builder(document);
+            // The lexical handler reports comments, so that text after a comment is located correctly.
+            parser.setProperty("http://xml.org/sax/properties/lexical-handler", builder);
+            parser.parse(new java.io.ByteArrayInputStream(bytes), builder);
             return document;
         } catch (SAXParseException e) {
             String message = e.getMessage();
@@ -62,17 +66,25 @@ final class PositionalXml {
         }
     }
 
-    /** Line and column where the element's start tag ends (SAX reports positions there). */
-    static int[] position(Element element) {
-        Object p = element.getUserData(POSITION);
+    /**
+     * Line and column of a node: for an element, where its start tag ends (SAX reports positions
+     * there); for a text node, its first character that is not white space.
+     */
+    static int[] position(Node node) {
+        Object p = node.getUserData(POSITION);
         return p instanceof int[] ? (int[]) p : new int[] {1, 1};
     }
 
-    private static final class Builder extends DefaultHandler {
+    private static final class Builder extends DefaultHandler2 {
         private final Document document;
         private final Deque<Element> open = new ArrayDeque<>();
         private final StringBuilder text = new StringBuilder();
         private Locator locator;
+        /** Where the next character of text starts: right after the latest tag, comment or instruction. */
+        private int cursorLine = 1;
+        private int cursorColumn = 1;
+        /** Where the pending text's first non-blank character is, or null while it is all white space. */
+        private int[] textPosition;
 
         Builder(Document document) {
             this.document = document;
@@ -97,24 +109,65 @@ final class PositionalXml {
                 open.peek().appendChild(element);
             }
             open.push(element);
+            moveCursorToLocator();
         }
 
         @Override
         public void endElement(String uri, String localName, String qName) {
             flushText();
             open.pop();
+            moveCursorToLocator();
+        }
+
+        @Override
+        public void comment(char[] ch, int start, int length) {
+            moveCursorToLocator();
+        }
+
+        @Override
+        public void processingInstruction(String target, String data) {
+            moveCursorToLocator();
+        }
+
+        @Override
+        public void startCDATA() {
+            // The locator is already past the whole section here; the text starts after "<![CDATA[".
+            cursorColumn += "<![CDATA[".length();
         }
 
         @Override
         public void characters(char[] ch, int start, int length) {
+            // SAX gives no position for text, so count from the end of the preceding markup through
+            // the leading white space (written literally) to the first character that is not blank.
+            for (int i = start; i < start + length && textPosition == null; i++) {
+                if (ch[i] == '\n') {
+                    cursorLine++;
+                    cursorColumn = 1;
+                } else if (Character.isWhitespace(ch[i])) {
+                    cursorColumn++;
+                } else {
+                    textPosition = new int[] {cursorLine, cursorColumn};
+                }
+            }
             text.append(ch, start, length);
+        }
+
+        private void moveCursorToLocator() {
+            if (textPosition == null) {
+                cursorLine = locator.getLineNumber();
+                cursorColumn = locator.getColumnNumber();
+            }
         }
 
         private void flushText() {
             if (text.length() > 0 && !open.isEmpty()) {
-                open.peek().appendChild(document.createTextNode(text.toString()));
+                Node node = open.peek().appendChild(document.createTextNode(text.toString()));
+                if (textPosition != null) {
+                    node.setUserData(POSITION, textPosition, null);
+                }
             }
             text.setLength(0);
+            textPosition = null;
         }
     }
 }

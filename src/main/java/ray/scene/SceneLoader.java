@@ -3,6 +3,7 @@ package ray.scene;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -71,7 +72,7 @@ public final class SceneLoader {
     private void setProperties(Object target, Element element) {
         for (Node node = element.getFirstChild(); node != null; node = node.getNextSibling()) {
             if (node.getNodeType() == Node.TEXT_NODE && !node.getTextContent().isBlank()) {
-                throw error(element, "unexpected text \"" + abbreviate(node.getTextContent().strip())
+                throw error(node, "unexpected text \"" + abbreviate(node.getTextContent().strip())
                         + "\" in <" + element.getTagName() + ">; expected only elements here");
             }
             if (node.getNodeType() != Node.ELEMENT_NODE) {
@@ -125,7 +126,12 @@ public final class SceneLoader {
     }
 
     private static String describe(Class<?> type) {
-        return type == Scene.class ? "<scene>" : "a " + type.getSimpleName();
+        return type == Scene.class ? "<scene>" : article(type.getSimpleName()) + type.getSimpleName();
+    }
+
+    /** "an OrthographicCamera", "a Sphere". */
+    private static String article(String word) {
+        return "AEIOUaeiou".indexOf(word.charAt(0)) >= 0 ? "an " : "a ";
     }
 
     private Object[] readArguments(Element property, Method setter) {
@@ -148,7 +154,13 @@ public final class SceneLoader {
             return new Object[] {resolve(property, text)};
         }
         if (types.length == 1 && types[0] == MeshData.class) {
-            return new Object[] {ObjReader.read(resolve(property, text))};
+            Path mesh = resolve(property, text);
+            // Checked here so that the error points at the scene line that names the file.
+            if (!Files.isRegularFile(mesh)) {
+                throw error(property, "no such mesh file " + mesh + "; expected an OBJ file (a relative path in <"
+                        + property.getTagName() + "> starts from the scene file's folder)");
+            }
+            return new Object[] {ObjReader.read(mesh)};
         }
         for (Class<?> t : types) {
             if (t != int.class && t != double.class) {
@@ -245,7 +257,8 @@ public final class SceneLoader {
                         + suggestionAmong(ref, named.keySet()));
             }
             if (!baseType.isInstance(found)) {
-                throw error(element, "ref \"" + ref + "\" names a " + found.getClass().getSimpleName() + "; expected a "
+                throw error(element, "ref \"" + ref + "\" names " + article(found.getClass().getSimpleName())
+                        + found.getClass().getSimpleName() + "; expected " + article(baseType.getSimpleName())
                         + baseType.getSimpleName());
             }
             return found;
@@ -273,19 +286,26 @@ public final class SceneLoader {
         String typeName = element.getAttribute("type");
         if (typeName.isEmpty()) {
             if (Modifier.isAbstract(baseType.getModifiers())) {
+                // <shader>blue</shader> is a common way to try to reuse a named object.
+                String text = hasChildElements(element) ? "" : element.getTextContent().strip();
+                String hint = text.isEmpty() ? "" : " (to reuse a named object, write <" + element.getTagName()
+                        + " ref=\"" + abbreviate(text) + "\"/>)";
                 throw error(element, "<" + element.getTagName() + "> needs a type attribute; expected one of "
-                        + String.join(", ", KnownTypes.of(baseType)));
+                        + String.join(", ", KnownTypes.of(baseType)) + hint);
             }
             return baseType;
         }
         String qualified = typeName.contains(".") ? typeName : baseType.getPackageName() + "." + typeName;
         try {
-            Class<?> type = Class.forName(qualified);
+            // Not initialized: a type name from a scene file must not run any class's static code
+            // before it is known to be a surface, shader, camera or light.
+            Class<?> type = Class.forName(qualified, false, SceneLoader.class.getClassLoader());
             if (baseType.isAssignableFrom(type) && !Modifier.isAbstract(type.getModifiers())) {
                 return type;
             }
-        } catch (ClassNotFoundException e) {
-            // reported below
+        } catch (ClassNotFoundException | NoClassDefFoundError e) {
+            // Reported below. NoClassDefFoundError ("wrong name") is what a case-insensitive
+            // file system gives for a wrongly cased name such as "sphere".
         }
         String suggestion = Suggestions.closest(typeName, KnownTypes.of(baseType));
         throw error(element, "unknown type \"" + typeName + "\" for <" + element.getTagName() + ">"
@@ -346,8 +366,8 @@ public final class SceneLoader {
         return s.length() <= 40 ? s : s.substring(0, 37) + "...";
     }
 
-    private SceneException error(Element element, String problem) {
-        int[] position = PositionalXml.position(element);
+    private SceneException error(Node node, String problem) {
+        int[] position = PositionalXml.position(node);
         return new SceneException(file, position[0], position[1], problem);
     }
 }

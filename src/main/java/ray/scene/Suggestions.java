@@ -5,7 +5,11 @@ final class Suggestions {
     private Suggestions() {
     }
 
-    /** The candidate nearest to {@code word} (ignoring case), or null when none is within a third of its length. */
+    /**
+     * The candidate nearest to {@code word} (ignoring case), or null when none is within a third of its
+     * length. A candidate that differs only in case is suggested: names such as types and refs are
+     * case-sensitive.
+     */
     static String closest(String word, Iterable<String> candidates) {
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
@@ -16,7 +20,7 @@ final class Suggestions {
                 best = c;
             }
         }
-        return best != null && bestDistance > 0 && bestDistance <= Math.max(1, word.length() / 3) ? best : null;
+        return best != null && !best.equals(word) && bestDistance <= Math.max(1, word.length() / 3) ? best : null;
     }
 
     /** Levenshtein distance by the two-row dynamic program. */

@@ -1,0 +1,156 @@
+package ray.scene;
+
+import static org.junit.Assert.assertThrows;
+
+import java.nio.file.Path;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+
+/**
+ * Checks that a bad OBJ file raises a {@link SceneException} naming the OBJ file and its own line
+ * number (column 1: OBJ statements are one per line), with the problem and what was expected.
+ */
+public class ObjReaderErrorsTest {
+    @Rule
+    public TemporaryFolder folder = new TemporaryFolder();
+
+    @Test
+    public void wordInACoordinateIsNotANumber() {
+        assertObjError("""
+                v 0 0 0
+                v 1 abc 0
+                """, 2, "\"abc\" is not a finite number", "expected v x y z");
+    }
+
+    @Test
+    public void nanAndOverflowingCoordinatesAreNotFinite() {
+        assertObjError("v 0 NaN 0\n", 1, "\"NaN\" is not a finite number");
+        assertObjError("v 0 0 0\nvn 1e999 0 0\n", 2, "\"1e999\" is not a finite number", "expected vn x y z");
+    }
+
+    @Test
+    public void vertexWithTwoCoordinatesAsksForThree() {
+        assertObjError("""
+                # a comment counts as a line
+                v 1 2
+                """, 2, "'v' needs 3 numbers", "expected v x y z");
+    }
+
+    @Test
+    public void texCoordWithoutValuesAsksForOne() {
+        assertObjError("v 0 0 0\nvt\n", 2, "'vt' needs at least one coordinate");
+    }
+
+    @Test
+    public void faceWithTwoVerticesIsRefused() {
+        assertObjError("""
+                v 0 0 0
+                v 1 0 0
+
+                f 1 2
+                """, 4, "a face needs at least 3 vertices, got 2");
+    }
+
+    @Test
+    public void vertexIndexPastTheLastVertexIsOutOfRange() {
+        assertObjError("""
+                v 0 0 0
+                v 1 0 0
+                v 0 1 0
+                f 1 2 4
+                """, 4, "vertex index 4 is out of range", "expected 1 to 3 or -1 to -3");
+    }
+
+    @Test
+    public void negativeIndexBeforeTheFirstVertexIsOutOfRange() {
+        assertObjError("""
+                v 0 0 0
+                v 1 0 0
+                v 0 1 0
+                f -4 1 2
+                """, 4, "vertex index -4 is out of range", "expected 1 to 3 or -1 to -3");
+    }
+
+    @Test
+    public void indexZeroIsOutOfRange() {
+        assertObjError("""
+                v 0 0 0
+                v 1 0 0
+                v 0 1 0
+                f 0 1 2
+                """, 4, "vertex index 0 is out of range");
+    }
+
+    @Test
+    public void faceBeforeAnyVertexSaysNoneIsDefinedYet() {
+        assertObjError("""
+                f 1 2 3
+                v 0 0 0
+                v 1 0 0
+                v 0 1 0
+                """, 1, "vertex index 1 is out of range", "none is defined so far");
+    }
+
+    @Test
+    public void normalAndTexCoordIndicesAreCheckedToo() {
+        assertObjError("""
+                v 0 0 0
+                v 1 0 0
+                v 0 1 0
+                vn 0 0 1
+                f 1//1 2//2 3//1
+                """, 5, "normal index 2 is out of range", "expected 1 to 1");
+        assertObjError("""
+                v 0 0 0
+                v 1 0 0
+                v 0 1 0
+                f 1/1 2/1 3/1
+                """, 4, "texture coordinate index 1 is out of range", "none is defined so far");
+    }
+
+    @Test
+    public void fractionalIndexIsNotAnIndex() {
+        assertObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1.5 2 3\n", 4, "\"1.5\" is not a vertex index", "expected an integer");
+    }
+
+    @Test
+    public void malformedFaceVertexIsRefused() {
+        assertObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", 4, "\"1/1/1/1\" is not a face vertex",
+                "expected v, v/vt, v//vn or v/vt/vn");
+        assertObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf /1 2 3\n", 4, "\"/1\" is not a face vertex");
+    }
+
+    @Test
+    public void emptyFileHasNoFaces() {
+        assertObjError("", 1, "the mesh has no faces", "expected at least one 'f' line");
+    }
+
+    @Test
+    public void verticesWithoutFacesAreReportedAtTheEndOfTheFile() {
+        assertObjError("""
+                v 0 0 0
+                v 1 0 0
+                v 0 1 0
+                """, 3, "the mesh has no faces");
+    }
+
+    @Test
+    public void lineNumbersCountWindowsLineEndingsOnce() {
+        assertObjError("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 9\r\n", 4, "vertex index 9 is out of range");
+    }
+
+    @Test
+    public void missingFileIsReportedWithItsName() {
+        Path missing = folder.getRoot().toPath().resolve("missing.obj");
+        SceneException e = assertThrows(SceneException.class, () -> ObjReader.read(missing));
+        SceneFixtures.assertError(e, missing, 1, 1, "no such mesh file");
+    }
+
+    /** Checks that reading {@code obj} fails at {@code line}, column 1, of that file, mentioning {@code words}. */
+    private void assertObjError(String obj, int line, String... words) {
+        Path file = SceneFixtures.write(folder, "mesh.obj", obj);
+        SceneException e = assertThrows(SceneException.class, () -> ObjReader.read(file));
+        SceneFixtures.assertError(e, file, line, 1, words);
+    }
+}

@@ -1,0 +1,296 @@
+package ray.scene;
+
+import static org.junit.Assert.assertFalse;
+
+import java.nio.file.Path;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+
+/**
+ * Checks errors in names: unknown elements, types and attributes (with a "did you mean" when a known
+ * name is close), a missing type, refs that name nothing or the wrong kind of object, a name used
+ * twice, and a mesh file that does not exist. Each error must name the file, line and column.
+ *
+ * <p>SAX locates an element where its start tag ends, so an element's column is the one just after
+ * its {@code >}; each element sits on its own line so that the line is unambiguous.
+ */
+public class SceneLoaderNameErrorsTest {
+    @Rule
+    public TemporaryFolder folder = new TemporaryFolder();
+
+    @Test
+    public void misspelledPropertySuggestsTheClosestOne() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Sphere">
+                    <radus>1</radus>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 5, 12, "unknown element <radus> in a Sphere", "did you mean <radius>?",
+                "expected one of center, radius, shader");
+    }
+
+    @Test
+    public void unknownElementFarFromAnyNameListsTheExpectedOnes() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <sphere/>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 12, "unknown element <sphere> in <scene>",
+                "expected one of backColor, camera, exposure, image, light, samples, shader, surface");
+        assertFalse(e.getMessage(), e.getMessage().contains("did you mean"));
+    }
+
+    @Test
+    public void propertyOfTheOtherCameraTypeIsUnknown() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="OrthographicCamera">
+                    <projDistance>2</projDistance>
+                  </camera>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 19, "unknown element <projDistance> in an OrthographicCamera",
+                "viewDir, viewHeight, viewPoint, viewUp, viewWidth");
+    }
+
+    @Test
+    public void misspelledTypeSuggestsTheClosestOne() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Sphre">
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 25, "unknown type \"Sphre\" for <surface>", "did you mean \"Sphere\"?",
+                "expected one of Sphere, Triangle, Box, Mesh, Group");
+    }
+
+    @Test
+    public void wronglyCasedTypeSuggestsTheRightCase() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <shader name="a" type="lambertian"/>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 39, "unknown type \"lambertian\" for <shader>", "did you mean \"Lambertian\"?",
+                "Lambertian, Phong, RGBNormals, Glazed");
+    }
+
+    @Test
+    public void typeOfTheWrongKindIsUnknownForThatElement() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="Sphere"/>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 2, 26, "unknown type \"Sphere\" for <camera>",
+                "expected one of PerspectiveCamera, OrthographicCamera");
+    }
+
+    @Test
+    public void surfaceWithoutTypeListsTheTypes() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface>
+                    <radius>1</radius>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 12, "<surface> needs a type attribute", "Sphere, Triangle, Box, Mesh, Group");
+    }
+
+    @Test
+    public void shaderNameWrittenAsTextPointsToRef() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <shader name="blue" type="Lambertian"/>
+                  <surface type="Sphere">
+                    <shader>blue</shader>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 6, 13, "<shader> needs a type attribute", "write <shader ref=\"blue\"/>");
+    }
+
+    @Test
+    public void unknownAttributeOnAnObjectElement() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Sphere" color="red">
+                  </surface>
+                </scene>
+                """);
+        // "  <surface type=\"Sphere\" color=\"red\">" is 37 characters.
+        SceneFixtures.assertError(e, bad(), 4, 38, "unknown attribute color on <surface>", "expected type, name or ref");
+    }
+
+    @Test
+    public void unknownAttributeOnAValueElement() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image units="px">4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 21, "unknown attribute units on <image>", "expected no attributes");
+    }
+
+    @Test
+    public void unknownAttributeOnTheScene() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene version="2">
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 1, 20, "unknown attribute version on <scene>");
+    }
+
+    @Test
+    public void misspelledRefSuggestsADefinedName() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <shader name="blue" type="Lambertian"/>
+                  <surface type="Sphere">
+                    <shader ref="blu"/>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 6, 24, "unknown ref \"blu\"", "did you mean \"blue\"?");
+    }
+
+    @Test
+    public void wronglyCasedRefSuggestsTheDefinedName() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <shader name="blue" type="Lambertian"/>
+                  <surface type="Sphere">
+                    <shader ref="Blue"/>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 6, 25, "unknown ref \"Blue\"", "did you mean \"blue\"?");
+    }
+
+    @Test
+    public void refToANameDefinedLaterIsUnknown() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Sphere">
+                    <shader ref="late"/>
+                  </surface>
+                  <shader name="late" type="Lambertian"/>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 5, 25, "unknown ref \"late\"", "defined earlier in the file");
+    }
+
+    @Test
+    public void refToAnObjectOfTheWrongKind() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <shader name="blue" type="Lambertian"/>
+                  <surface ref="blue"/>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 5, 24, "ref \"blue\" names a Lambertian", "expected a Surface");
+    }
+
+    @Test
+    public void refWithItsOwnPropertiesIsRefused() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <shader name="blue" type="Lambertian"/>
+                  <surface type="Sphere">
+                    <shader ref="blue">
+                      <diffuseColor>1 0 0</diffuseColor>
+                    </shader>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 6, 24, "<shader ref=\"blue\"> reuses a named object", "no type, name or properties");
+    }
+
+    @Test
+    public void duplicateNameIsReportedAtItsSecondDefinition() {
+        SceneException e = SceneFixtures.loadError(folder, """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <shader name="blue" type="Lambertian"/>
+                  <shader name="blue" type="Phong"/>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 5, 37, "duplicate name \"blue\"");
+    }
+
+    @Test
+    public void missingMeshFileIsReportedAtItsDataElement() {
+        Path scene = SceneFixtures.write(folder, "scenes/mesh.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Mesh">
+                    <data>../meshes/nope.obj</data>
+                  </surface>
+                </scene>
+                """);
+        Path resolved = folder.getRoot().toPath().toAbsolutePath().resolve("meshes/nope.obj");
+        SceneFixtures.assertError(SceneFixtures.loadError(scene), scene, 5, 11, "no such mesh file " + resolved,
+                "relative path in <data> starts from the scene file's folder");
+    }
+
+    @Test
+    public void errorInAMeshFileNamesTheObjFileAndItsLine() {
+        Path obj = SceneFixtures.write(folder, "meshes/broken.obj", """
+                v 0 0 0
+                v 1 0 0
+                f 1 2 3
+                """);
+        Path scene = SceneFixtures.write(folder, "mesh.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Mesh">
+                    <data>meshes/broken.obj</data>
+                  </surface>
+                </scene>
+                """);
+        SceneException e = SceneFixtures.loadError(scene);
+        SceneFixtures.assertError(e, obj.toAbsolutePath().normalize(), 3, 1, "vertex index 3 is out of range");
+    }
+
+    private Path bad() {
+        return folder.getRoot().toPath().resolve("bad.xml");
+    }
+}

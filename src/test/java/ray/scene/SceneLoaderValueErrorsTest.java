@@ -1,0 +1,260 @@
+package ray.scene;
+
+import java.nio.file.Path;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+
+/**
+ * Checks errors in values: the wrong number of values, words and special values where numbers
+ * belong, fractions where integers belong, values out of range (radius, image size, samples,
+ * exposure, view size, camera axes, box corners, scale), and a scene without a camera or an image
+ * size. Each error must name the file, line and column, and what was expected.
+ *
+ * <p>SAX locates an element where its start tag ends, so an element's column is the one just after
+ * its {@code >} (for {@code "    <radius>"}, column 13); each element sits on its own line.
+ */
+public class SceneLoaderValueErrorsTest {
+    @Rule
+    public TemporaryFolder folder = new TemporaryFolder();
+
+    @Test
+    public void vectorWithTwoValuesAsksForThree() {
+        SceneException e = loadSphereError("    <center>1 2</center>\n");
+        SceneFixtures.assertError(e, bad(), 5, 13, "<center> has 2 values", "expected three numbers");
+    }
+
+    @Test
+    public void vectorWithFourValuesAsksForThree() {
+        SceneException e = loadSphereError("    <center>1 2 3 4</center>\n");
+        SceneFixtures.assertError(e, bad(), 5, 13, "<center> has 4 values", "expected three numbers");
+    }
+
+    @Test
+    public void emptyNumberAsksForOne() {
+        SceneException e = loadSphereError("    <radius> </radius>\n");
+        SceneFixtures.assertError(e, bad(), 5, 13, "<radius> has no value", "expected a number");
+    }
+
+    @Test
+    public void imageWithOneValueAsksForTwoIntegers() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>300</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 10, "<image> has 1 value", "expected 2 integers");
+    }
+
+    @Test
+    public void wordsAndSpecialValuesAreNotNumbers() {
+        // Java's own parser would take NaN, Infinity, hex floats and a "d" suffix; a scene takes plain decimals.
+        for (String word : new String[] {"abc", "NaN", "Infinity", "-Infinity", "0x10", "1d", "1,5"}) {
+            SceneException e = loadSphereError("    <radius>" + word + "</radius>\n");
+            SceneFixtures.assertError(e, bad(), 5, 13, "\"" + word + "\" in <radius> is not a number", "expected a number");
+        }
+    }
+
+    @Test
+    public void numberBeyondDoubleRangeIsTooLarge() {
+        SceneException e = loadSphereError("    <center>0 1e999 0</center>\n");
+        SceneFixtures.assertError(e, bad(), 5, 13, "\"1e999\" in <center> is too large", "expected three numbers");
+    }
+
+    @Test
+    public void fractionalImageSizeIsNotAnInteger() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>300.5 200</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 10, "\"300.5\" in <image> is not an integer", "expected 2 integers");
+    }
+
+    @Test
+    public void imageSizeBeyondIntIsTooLarge() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>300 99999999999</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 10, "\"99999999999\" in <image> is too large", "expected 2 integers");
+    }
+
+    @Test
+    public void fractionalSamplesIsNotAnInteger() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <samples>2.5</samples>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 12, "\"2.5\" in <samples> is not an integer", "expected an integer");
+    }
+
+    @Test
+    public void negativeAndZeroRadiusAreInvalid() {
+        SceneException negative = loadSphereError("    <radius>-1</radius>\n");
+        SceneFixtures.assertError(negative, bad(), 5, 13, "invalid <radius>", "radius must be a positive number, got -1.0");
+        SceneException zero = loadSphereError("    <radius>0</radius>\n");
+        SceneFixtures.assertError(zero, bad(), 5, 13, "invalid <radius>", "radius must be a positive number, got 0.0");
+    }
+
+    @Test
+    public void zeroImageSizeIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>0 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 10, "invalid <image>", "two positive integers, got 0 3");
+    }
+
+    @Test
+    public void zeroSamplesIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <samples>0</samples>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 12, "invalid <samples>", "samples must be a positive integer, got 0");
+    }
+
+    @Test
+    public void negativeExposureIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <exposure>-0.5</exposure>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 13, "invalid <exposure>", "got -0.5");
+    }
+
+    @Test
+    public void zeroViewWidthIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera">
+                    <viewWidth>0</viewWidth>
+                  </camera>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 16, "invalid <viewWidth>", "viewWidth must be a positive number");
+    }
+
+    @Test
+    public void zeroViewDirIsReportedAtItsCamera() {
+        // The axes are checked once the whole camera is read, so the error points at <camera>.
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera">
+                    <viewDir>0 0 0</viewDir>
+                  </camera>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 2, 36, "invalid PerspectiveCamera", "viewDir must be a nonzero vector");
+    }
+
+    @Test
+    public void viewUpParallelToViewDirIsReportedAtItsCamera() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="OrthographicCamera">
+                    <viewDir>0 0 -1</viewDir>
+                    <viewUp>0 0 2</viewUp>
+                  </camera>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 2, 37, "invalid OrthographicCamera", "must not be zero or parallel to viewDir");
+    }
+
+    @Test
+    public void boxWithMinAboveMaxIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Box">
+                    <minPt>0 2 0</minPt>
+                    <maxPt>1 1 1</maxPt>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 23, "invalid Box", "must be less than maxPt");
+    }
+
+    @Test
+    public void zeroScaleIsASingularTransform() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Group">
+                    <scale>1 0 1</scale>
+                    <surface type="Sphere"/>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 25, "invalid Group", "singular");
+    }
+
+    @Test
+    public void emptyMeshPathAsksForAFile() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Mesh">
+                    <data> </data>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 5, 11, "<data> is empty", "expected a file path");
+    }
+
+    @Test
+    public void sceneWithoutCameraIsReportedAtTheSceneElement() {
+        SceneException e = loadError("""
+                <?xml version="1.0"?>
+                <scene>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 2, 8, "the scene has no <camera>");
+    }
+
+    @Test
+    public void sceneWithoutImageIsReportedAtTheSceneElement() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 1, 8, "no <image> size", "<image>width height</image>");
+    }
+
+    /** The error of a scene whose line 5 is {@code line}, inside a sphere that starts on line 4. */
+    private SceneException loadSphereError(String line) {
+        return loadError("<scene>\n" + SceneFixtures.CAMERA_AND_IMAGE + "  <surface type=\"Sphere\">\n" + line + "  </surface>\n</scene>\n");
+    }
+
+    private SceneException loadError(String xml) {
+        return SceneFixtures.loadError(folder, xml);
+    }
+
+    private Path bad() {
+        return folder.getRoot().toPath().resolve("bad.xml");
+    }
+}

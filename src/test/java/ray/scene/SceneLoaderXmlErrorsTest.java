@@ -1,0 +1,169 @@
+package ray.scene;
+
+import static org.junit.Assert.assertFalse;
+
+import java.nio.file.Path;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+
+/**
+ * Checks errors in the XML itself: malformed markup, the wrong root, text where elements belong,
+ * missing or empty files, and the refusal of any DOCTYPE (so no entity can expand without bound or
+ * read a local file). Each error must name the file, the line and column, and the problem.
+ *
+ * <p>SAX locates an element where its start tag ends, so an element's column is the one just after
+ * its {@code >}; each element sits on its own line so that the line is unambiguous.
+ */
+public class SceneLoaderXmlErrorsTest {
+    @Rule
+    public TemporaryFolder folder = new TemporaryFolder();
+
+    @Test
+    public void mismatchedEndTagIsMalformedXmlAtThatTag() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera">
+                  </camra>
+                </scene>
+                """);
+        // The parser stops inside "</camra>" (columns 3 to 10 of line 3).
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 5, "malformed XML", "camera");
+    }
+
+    @Test
+    public void unclosedAttributeQuoteIsMalformedXmlWhereTheParserNotices() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera/>
+                  <image>4 3</image>
+                </scene>
+                """);
+        // The quote opened on line 2 runs on into line 3, where the parser stops at the "<" of "<image>".
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 3, "malformed XML", "attribute \"type\"", "'<'");
+    }
+
+    @Test
+    public void truncatedFileIsMalformedXml() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                """);
+        // The parser notices at the end of the file: line 3, after the last newline.
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 1, "malformed XML", "start and end");
+    }
+
+    @Test
+    public void emptyFileIsMalformedXml() {
+        Path file = SceneFixtures.write(folder, "empty.xml", "");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1, "malformed XML", "end of file");
+    }
+
+    @Test
+    public void missingFileIsReportedWithItsName() {
+        Path file = folder.getRoot().toPath().resolve("nowhere.xml");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1, "no such file");
+    }
+
+    @Test
+    public void rootOtherThanSceneIsRefused() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <?xml version="1.0"?>
+                <scenery>
+                </scenery>
+                """);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 10, "root element is <scenery>", "expected <scene>");
+    }
+
+    @Test
+    public void textAmongElementsIsReportedWhereTheTextStarts() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  radius 2
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 3,
+                "unexpected text \"radius 2\" in <scene>", "expected only elements");
+    }
+
+    @Test
+    public void textAfterAPropertyIsReportedWhereTheTextStarts() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Sphere">
+                    <radius>1</radius> oops
+                  </surface>
+                </scene>
+                """);
+        // "    <radius>1</radius> " is 23 characters, so "oops" starts in column 24.
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 5, 24, "unexpected text \"oops\" in <surface>");
+    }
+
+    @Test
+    public void textAfterACommentAndTabsIsLocatedPastThem() {
+        Path file = SceneFixtures.write(folder, "bad.xml", "<scene>\n  <!-- a comment\n  over two lines -->\n\t\tstray\n</scene>\n");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 4, 3, "unexpected text \"stray\"");
+    }
+
+    @Test
+    public void textInACdataSectionIsLocatedInsideIt() {
+        Path file = SceneFixtures.write(folder, "bad.xml", "<scene>\n  <![CDATA[  stray ]]>\n</scene>\n");
+        // "  <![CDATA[  " is 13 characters.
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 14, "unexpected text \"stray\"");
+    }
+
+    @Test
+    public void propertyHoldingElementsIsRefused() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Sphere">
+                    <radius>
+                      <value>1</value>
+                    </radius>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 5, 13, "<radius> holds elements", "expected only a value");
+    }
+
+    @Test(timeout = 10_000)
+    public void billionLaughsFailsFastOnItsDoctype() {
+        // Ten levels of ten references each would expand to 10¹⁰ "lol"s if the parser took the DOCTYPE.
+        StringBuilder xml = new StringBuilder("<?xml version=\"1.0\"?>\n<!DOCTYPE scene [\n  <!ENTITY lol0 \"lol\">\n");
+        for (int level = 1; level <= 10; level++) {
+            xml.append("  <!ENTITY lol").append(level).append(" \"");
+            for (int k = 0; k < 10; k++) {
+                xml.append("&lol").append(level - 1).append(';');
+            }
+            xml.append("\">\n");
+        }
+        xml.append("]>\n<scene>\n  <exposure>&lol10;</exposure>\n</scene>\n");
+        Path file = SceneFixtures.write(folder, "lol.xml", xml.toString());
+        // Located at "<!DOCTYPE" on line 2, just past the keyword.
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 10, "DOCTYPE is not allowed", "no entities");
+    }
+
+    @Test
+    public void externalEntityIsRefusedAndTheFileItNamesNeverAppears() {
+        Path secret = SceneFixtures.write(folder, "secret.txt", "TOP-SECRET-42");
+        Path file = SceneFixtures.write(folder, "xxe.xml", "<?xml version=\"1.0\"?>\n"
+                + "<!DOCTYPE scene [\n"
+                + "  <!ENTITY secret SYSTEM \"" + secret.toUri() + "\">\n"
+                + "]>\n"
+                + "<scene>\n"
+                + "  <camera type=\"PerspectiveCamera\"/>\n"
+                + "  <image>4 3</image>\n"
+                // Were the entity expanded, the secret would come back in the "not a number" error.
+                + "  <exposure>&secret;</exposure>\n"
+                + "</scene>\n");
+        SceneException e = SceneFixtures.loadError(file);
+        SceneFixtures.assertError(e, file, 2, 10, "DOCTYPE is not allowed");
+        assertFalse(e.getMessage(), e.getMessage().contains("TOP-SECRET"));
+    }
+}
