@@ -6,6 +6,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.stream.DoubleStream;
+import java.util.stream.IntStream;
 import ray.surface.MeshData;
 
 /**
@@ -17,11 +19,15 @@ import ray.surface.MeshData;
  */
 public final class ObjReader {
     private final Path file;
-    private final DoubleList positions = new DoubleList();
-    private final DoubleList normals = new DoubleList();
+    // Primitive builders, so that a large mesh does not box a value per coordinate.
+    private final DoubleStream.Builder positions = DoubleStream.builder();
+    private final DoubleStream.Builder normals = DoubleStream.builder();
+    private final IntStream.Builder triangles = IntStream.builder();
+    private final IntStream.Builder triangleNormals = IntStream.builder();
+    private int vertexCount;
+    private int normalCount;
     private int texCoordCount;
-    private final IntList triangles = new IntList();
-    private final IntList triangleNormals = new IntList();
+    private int triangleCount;
     private boolean anyNormals;
     private int lineNumber;
 
@@ -45,11 +51,11 @@ public final class ObjReader {
         } catch (IOException e) {
             throw new SceneException(file, Math.max(1, lineNumber), 1, "cannot read the mesh file (" + e.getMessage() + ")");
         }
-        if (triangles.size() == 0) {
+        if (triangleCount == 0) {
             throw new SceneException(file, Math.max(1, lineNumber), 1, "the mesh has no faces; expected at least one 'f' line");
         }
-        return new MeshData(positions.toArray(), normals.toArray(), triangles.toArray(),
-                anyNormals ? triangleNormals.toArray() : null);
+        return new MeshData(positions.build().toArray(), normals.build().toArray(), triangles.build().toArray(),
+                anyNormals ? triangleNormals.build().toArray() : null);
     }
 
     private void parseLine(String raw) {
@@ -62,9 +68,11 @@ public final class ObjReader {
         switch (words[0]) {
             case "v":
                 readVector(words, positions, "v x y z");
+                vertexCount++;
                 break;
             case "vn":
                 readVector(words, normals, "vn x y z");
+                normalCount++;
                 break;
             case "vt":
                 if (words.length < 2) {
@@ -81,7 +89,7 @@ public final class ObjReader {
         }
     }
 
-    private void readVector(String[] words, DoubleList into, String form) {
+    private void readVector(String[] words, DoubleStream.Builder into, String form) {
         // "v x y z w" is allowed by the format (w is a weight we ignore); so are vertex colors after xyz.
         if (words.length < 4) {
             throw error("'" + words[0] + "' needs 3 numbers; expected " + form);
@@ -116,18 +124,19 @@ public final class ObjReader {
             if (parts.length > 3 || parts[0].isEmpty()) {
                 throw error("\"" + words[i + 1] + "\" is not a face vertex; expected v, v/vt, v//vn or v/vt/vn");
             }
-            vertex[i] = index(parts[0], positions.size() / 3, "vertex");
+            vertex[i] = index(parts[0], vertexCount, "vertex");
             if (parts.length >= 2 && !parts[1].isEmpty()) {
                 index(parts[1], texCoordCount, "texture coordinate");
             }
             if (parts.length == 3 && !parts[2].isEmpty()) {
-                normal[i] = index(parts[2], normals.size() / 3, "normal");
+                normal[i] = index(parts[2], normalCount, "normal");
             } else {
                 faceHasNormals = false;
             }
         }
         anyNormals |= faceHasNormals;
         for (int k = 1; k + 1 < corners; k++) {
+            triangleCount++;
             triangles.add(vertex[0]);
             triangles.add(vertex[k]);
             triangles.add(vertex[k + 1]);
@@ -160,46 +169,5 @@ public final class ObjReader {
 
     private SceneException error(String problem) {
         return new SceneException(file, lineNumber, 1, problem);
-    }
-
-    /** A growable array of doubles, so that a large mesh does not box a value per coordinate. */
-    private static final class DoubleList {
-        private double[] values = new double[96];
-        private int size;
-
-        void add(double v) {
-            if (size == values.length) {
-                values = java.util.Arrays.copyOf(values, size * 2);
-            }
-            values[size++] = v;
-        }
-
-        int size() {
-            return size;
-        }
-
-        double[] toArray() {
-            return java.util.Arrays.copyOf(values, size);
-        }
-    }
-
-    private static final class IntList {
-        private int[] values = new int[96];
-        private int size;
-
-        void add(int v) {
-            if (size == values.length) {
-                values = java.util.Arrays.copyOf(values, size * 2);
-            }
-            values[size++] = v;
-        }
-
-        int size() {
-            return size;
-        }
-
-        int[] toArray() {
-            return java.util.Arrays.copyOf(values, size);
-        }
     }
 }
