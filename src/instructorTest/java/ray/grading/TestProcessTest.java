@@ -1,0 +1,115 @@
+package ray.grading;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+import java.util.stream.Collectors;
+import org.junit.BeforeClass;
+import org.junit.ClassRule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+
+/**
+ * The test JVM survives student code at its worst: a System.exit, an infinite loop that ignores
+ * interrupts, unbounded allocation, an assertion on NaN. Each costs its own test only, and every
+ * test after it still runs. Runs a small project compiled here, with graded and ungraded tests.
+ */
+public class TestProcessTest {
+    @ClassRule
+    public static final TemporaryFolder FOLDER = new TemporaryFolder();
+
+    private static final String DEMO = String.join("\n",
+            "package demo;",
+            "import static org.junit.Assert.assertEquals;",
+            "import org.junit.FixMethodOrder;",
+            "import org.junit.Test;",
+            "import org.junit.runners.MethodSorters;",
+            "import ray.testing.Points;",
+            "import ray.testing.StudentTask;",
+            "import ray.testing.Visibility;",
+            "@Points(value = 1, task = StudentTask.SPHERE)",
+            "@FixMethodOrder(MethodSorters.NAME_ASCENDING)",
+            "public class DemoTest {",
+            "    @Test public void a_passes() { }",
+            "    @Test public void b_failsAnAssertion() { assertEquals(1, 2); }",
+            "    @Test public void c_callsSystemExit() { System.exit(3); }",
+            "    @Test public void d_loopsForeverIgnoringInterrupts() { while (true) { Thread.interrupted(); } }",
+            "    @Test public void e_allocatesWithoutBound() {",
+            "        java.util.List<long[]> hoard = new java.util.ArrayList<>();",
+            "        while (true) { hoard.add(new long[1 << 20]); }",
+            "    }",
+            "    @Test public void f_comparesNaN() { assertEquals(0.5, Double.NaN, 1e-9); }",
+            "    @Points(value = 3, task = StudentTask.GROUP, visibility = Visibility.HIDDEN)",
+            "    @Test public void g_hiddenAndWorthThree() { }",
+            "}",
+            "");
+    private static final String UNGRADED = "package demo;\npublic class UngradedTest {\n"
+            + "    @org.junit.Test public void notCounted() { }\n}\n";
+
+    private static Path project;
+
+    @BeforeClass
+    public static void compileDemoProject() throws Exception {
+        project = FOLDER.getRoot().toPath().resolve("demo-project");
+        Path tests = project.resolve("src/test/java/demo");
+        Files.createDirectories(tests);
+        Files.writeString(tests.resolve("DemoTest.java"), DEMO, StandardCharsets.UTF_8);
+        Files.writeString(tests.resolve("UngradedTest.java"), UNGRADED, StandardCharsets.UTF_8);
+        CompileResult compiled = ProjectCompiler.compile(project, project.resolve("classes"), System.getProperty("java.class.path"));
+        assertTrue(compiled.messages(), compiled.ok());
+    }
+
+    private static TestProcess process(String work) {
+        return new TestProcess(project, project.resolve("classes"), System.getProperty("java.class.path"),
+                project.resolve(work)).withHardLimitSeconds(4);
+    }
+
+    @Test(timeout = 120_000)
+    public void everyFailureCostsOnlyItsOwnTestAndLaterTestsStillRun() throws Exception {
+        List<TestOutcome> outcomes = process("run-all").run(null);
+        Map<String, TestOutcome> byMethod = outcomes.stream().collect(Collectors.toMap(TestOutcome::method, Function.identity()));
+        assertEquals(List.of("a_passes", "b_failsAnAssertion", "c_callsSystemExit", "d_loopsForeverIgnoringInterrupts",
+                "e_allocatesWithoutBound", "f_comparesNaN", "g_hiddenAndWorthThree"),
+                outcomes.stream().map(TestOutcome::method).collect(Collectors.toList()));
+        assertTrue(byMethod.get("a_passes").passed());
+        assertFalse(byMethod.get("b_failsAnAssertion").passed());
+        assertEquals("expected:<1> but was:<2>", byMethod.get("b_failsAnAssertion").message());
+        assertEquals("the code under test called System.exit, which ended the test JVM", byMethod.get("c_callsSystemExit").message());
+        assertTrue(byMethod.get("d_loopsForeverIgnoringInterrupts").message(),
+                byMethod.get("d_loopsForeverIgnoringInterrupts").message().startsWith("stopped after 4 s"));
+        assertTrue(byMethod.get("e_allocatesWithoutBound").message(),
+                byMethod.get("e_allocatesWithoutBound").message().startsWith("java.lang.OutOfMemoryError"));
+        assertFalse(byMethod.get("f_comparesNaN").passed());
+        TestOutcome hidden = byMethod.get("g_hiddenAndWorthThree");
+        assertTrue(hidden.passed());
+        assertEquals(3, hidden.points(), 0);
+        assertEquals(4, hidden.task());
+        assertEquals("Group", hidden.taskTitle());
+        assertEquals("hidden", hidden.visibility());
+        assertEquals(1, byMethod.get("a_passes").points(), 0);
+        assertEquals(2, byMethod.get("a_passes").task());
+        assertEquals("visible", byMethod.get("a_passes").visibility());
+    }
+
+    @Test(timeout = 60_000)
+    public void aTaskFilterRunsOnlyThatTasksTests() throws Exception {
+        List<TestOutcome> outcomes = process("run-task-4").run(4);
+        assertEquals(1, outcomes.size());
+        assertEquals("g_hiddenAndWorthThree", outcomes.get(0).method());
+    }
+
+    @Test(timeout = 60_000)
+    public void listingNamesEveryGradedTestWithoutRunningIt() throws Exception {
+        List<TestOutcome> listed = process("list").list(null);
+        assertEquals(7, listed.size());
+        assertTrue(listed.stream().noneMatch(TestOutcome::passed));
+        assertEquals(9, listed.stream().mapToDouble(TestOutcome::points).sum(), 0);
+    }
+}

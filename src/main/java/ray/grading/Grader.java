@@ -1,0 +1,158 @@
+package ray.grading;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeSet;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * The autograder ({@code gradle grade [-Psubmission=DIR|ZIP]}): runs every graded test and writes
+ * Gradescope's results.json.
+ *
+ * <p>A submission is graded task by task: the tests of task N run on a fresh copy of the
+ * instructor's tree in which only task N's files are the student's. So a broken sphere costs the
+ * sphere's points and nothing else, and no test needs its own copy of the solution. Before that,
+ * all the student's files together must compile; a submission that does not compile scores 0,
+ * with the compiler's messages as the output. Without a submission, the instructor's own tree is
+ * graded (it should score full marks).
+ */
+@Command(name = "grade", mixinStandardHelpOptions = true, description = "Grades the instructor tree or a submission.")
+public final class Grader implements Callable<Integer> {
+    @Option(names = "--project", required = true, description = "The instructor's project folder.")
+    Path project;
+
+    @Option(names = "--classpath", required = true, description = "Libraries the tests need (JUnit, ...).")
+    String classpath;
+
+    @Option(names = "--submission", description = "A folder or zip with the student's files.")
+    Path submission;
+
+    @Option(names = "--out", description = "Work folder; results.json goes here (default: ${DEFAULT-VALUE}).")
+    Path out = Path.of("build/grade");
+
+    @Option(names = "--results", description = "Also write results.json here (Gradescope: /autograder/results/results.json).")
+    Path resultsCopy;
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new Grader()).execute(args));
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        long start = System.nanoTime();
+        StringBuilder output = new StringBuilder();
+        List<TestOutcome> outcomes = submission == null ? gradeInstructorTree() : gradeSubmission(output);
+        double seconds = (System.nanoTime() - start) / 1e9;
+        Map<String, Object> results = GradescopeResults.of(outcomes, output.toString(), seconds);
+        Path resultsFile = out.resolve("results.json");
+        GradescopeResults.write(results, resultsFile);
+        if (resultsCopy != null) {
+            GradescopeResults.write(results, resultsCopy);
+        }
+        System.out.print(output);
+        System.out.print(GradescopeResults.table(outcomes));
+        for (TestOutcome t : outcomes) {
+            if (!t.passed()) {
+                System.out.println("FAILED " + t.id() + ": " + t.message().lines().findFirst().orElse(""));
+            }
+        }
+        System.out.println("results: " + resultsFile);
+        return 0;
+    }
+
+    private List<TestOutcome> gradeInstructorTree() throws IOException, InterruptedException {
+        Path tree = ProjectTree.copy(project, out.resolve("work/instructor"), Map.of());
+        CompileResult compiled = compile(tree);
+        if (!compiled.ok()) {
+            throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
+        }
+        return tests(tree).run(null);
+    }
+
+    private List<TestOutcome> gradeSubmission(StringBuilder output) throws IOException, InterruptedException {
+        Map<String, Integer> studentFiles = StudentFiles.in(project);
+        Path work = out.resolve("work");
+        Submission handedIn = Submission.locate(submission, studentFiles.keySet(), work.resolve("submission"));
+        Map<String, Path> overlay = new LinkedHashMap<>(handedIn.files);
+        describe(handedIn, output);
+        for (String missing : handedIn.missing) {
+            // A file not handed in counts as the untouched handout's stub.
+            Path stub = work.resolve("stubs").resolve(missing);
+            Files.createDirectories(stub.getParent());
+            String solution = Files.readString(project.resolve(missing), StandardCharsets.UTF_8);
+            Files.writeString(stub, SolutionMarkers.studentVersion(solution, missing), StandardCharsets.UTF_8);
+            overlay.put(missing, stub);
+        }
+        Path whole = ProjectTree.copy(project, work.resolve("whole"), overlay);
+        CompileResult compiled = compile(whole);
+        if (!compiled.ok()) {
+            output.append("Your code does not compile, so no test could run:\n").append(compiled.messages());
+            return allFailed(null, "does not compile:\n" + compiled.messages());
+        }
+        List<TestOutcome> outcomes = new ArrayList<>();
+        for (int task : new TreeSet<>(studentFiles.values())) {
+            Map<String, Path> taskFiles = new LinkedHashMap<>();
+            overlay.forEach((path, file) -> {
+                if (studentFiles.get(path) == task) {
+                    taskFiles.put(path, file);
+                }
+            });
+            Path tree = ProjectTree.copy(project, work.resolve("task-" + task), taskFiles);
+            CompileResult taskCompiled = compile(tree);
+            if (!taskCompiled.ok()) {
+                // Task N's files compile with the student's other files but not with the solution's:
+                // they depend on changes made elsewhere.
+                outcomes.addAll(allFailed(task, "task " + task + "'s files do not compile on their own (do they use"
+                        + " something you changed in another task's file?):\n" + taskCompiled.messages()));
+            } else {
+                outcomes.addAll(tests(tree).run(task));
+            }
+        }
+        return outcomes;
+    }
+
+    /** Every graded test (of one task, or all), failed with the same reason: listed from the instructor's own tree. */
+    private List<TestOutcome> allFailed(Integer task, String why) throws IOException, InterruptedException {
+        Path tree = out.resolve("work/instructor");
+        if (!Files.exists(out.resolve("work/instructor/classes"))) {
+            ProjectTree.copy(project, tree, Map.of());
+            compile(tree);
+        }
+        List<TestOutcome> failed = new ArrayList<>();
+        for (TestOutcome t : tests(tree).list(task)) {
+            failed.add(t.failedWith(why));
+        }
+        return failed;
+    }
+
+    private CompileResult compile(Path tree) throws IOException {
+        return ProjectCompiler.compile(tree, tree.resolve("classes"), classpath);
+    }
+
+    private TestProcess tests(Path tree) {
+        return new TestProcess(tree, tree.resolve("classes"), classpath, tree.resolve("test-run"));
+    }
+
+    private static void describe(Submission s, StringBuilder output) {
+        output.append("Graded files: ").append(s.files.isEmpty() ? "none" : String.join(", ", s.files.keySet())).append('\n');
+        if (!s.missing.isEmpty()) {
+            output.append("Not found in the submission (graded as the untouched handout): ")
+                    .append(String.join(", ", s.missing)).append('\n');
+        }
+        if (!s.ignored.isEmpty()) {
+            int shown = Math.min(s.ignored.size(), 40);
+            output.append("Ignored (only the files you were asked to edit are graded): ")
+                    .append(String.join(", ", s.ignored.subList(0, shown)))
+                    .append(s.ignored.size() > shown ? " and " + (s.ignored.size() - shown) + " more" : "").append('\n');
+        }
+    }
+}

@@ -1,0 +1,67 @@
+package ray.grading;
+
+import java.io.IOException;
+import java.nio.file.FileVisitResult;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Stream;
+
+/** Copies of a project tree to grade in: the sources and scenes, with some student files laid over them. */
+final class ProjectTree {
+    /** What a test run needs from the project; build output, VCS data and docs are not copied. */
+    private static final List<String> PARTS = List.of("src", "scenes");
+
+    private ProjectTree() {
+    }
+
+    /** A fresh copy of {@code project}'s sources and scenes at {@code target}, with {@code overlay} (relative path → file) laid over it. */
+    static Path copy(Path project, Path target, Map<String, Path> overlay) throws IOException {
+        deleteRecursively(target);
+        Files.createDirectories(target);
+        for (String part : PARTS) {
+            Path from = project.resolve(part);
+            if (Files.isDirectory(from)) {
+                copyRecursively(from, target.resolve(part));
+            }
+        }
+        for (Map.Entry<String, Path> file : overlay.entrySet()) {
+            Path destination = target.resolve(file.getKey());
+            Files.createDirectories(destination.getParent());
+            Files.copy(file.getValue(), destination, StandardCopyOption.REPLACE_EXISTING);
+        }
+        return target;
+    }
+
+    static void copyRecursively(Path from, Path to) throws IOException {
+        Files.walkFileTree(from, new SimpleFileVisitor<>() {
+            @Override
+            public FileVisitResult preVisitDirectory(Path dir, BasicFileAttributes attrs) throws IOException {
+                Files.createDirectories(to.resolve(from.relativize(dir).toString()));
+                return FileVisitResult.CONTINUE;
+            }
+
+            @Override
+            public FileVisitResult visitFile(Path file, BasicFileAttributes attrs) throws IOException {
+                Files.copy(file, to.resolve(from.relativize(file).toString()), StandardCopyOption.REPLACE_EXISTING);
+                return FileVisitResult.CONTINUE;
+            }
+        });
+    }
+
+    static void deleteRecursively(Path path) throws IOException {
+        if (!Files.exists(path)) {
+            return;
+        }
+        try (Stream<Path> walk = Files.walk(path)) {
+            for (Path p : (Iterable<Path>) walk.sorted(Comparator.reverseOrder())::iterator) {
+                Files.delete(p);
+            }
+        }
+    }
+}

@@ -1,0 +1,62 @@
+package ray.grading;
+
+/**
+ * The handout markers of DESIGN.md: lines from {@code // BEGIN SOLUTION} through
+ * {@code // END SOLUTION} are the instructor's; a {@code // STUB: code} line is the student's
+ * {@code code}. One source serves both, and both versions compile.
+ */
+public final class SolutionMarkers {
+    public static final String BEGIN = "// BEGIN SOLUTION";
+    public static final String END = "// END SOLUTION";
+    public static final String STUB = "// STUB: ";
+
+    private SolutionMarkers() {
+    }
+
+    /**
+     * The student's version of a source file: solution blocks removed, stub lines uncommented
+     * (keeping their indentation).
+     *
+     * @throws IllegalArgumentException for markers that do not pair up, naming the file and line
+     */
+    public static String studentVersion(String source, String fileName) {
+        StringBuilder out = new StringBuilder(source.length());
+        boolean inSolution = false;
+        int beganAt = 0;
+        String[] lines = source.split("\n", -1);
+        for (int n = 0; n < lines.length; n++) {
+            String line = lines[n];
+            String trimmed = line.strip();
+            if (trimmed.equals(BEGIN)) {
+                if (inSolution) {
+                    throw new IllegalArgumentException(fileName + ":" + (n + 1) + ": " + BEGIN + " inside the block begun at line " + beganAt);
+                }
+                inSolution = true;
+                beganAt = n + 1;
+                continue;
+            }
+            if (trimmed.equals(END)) {
+                if (!inSolution) {
+                    throw new IllegalArgumentException(fileName + ":" + (n + 1) + ": " + END + " without " + BEGIN);
+                }
+                inSolution = false;
+                continue;
+            }
+            if (inSolution) {
+                continue;
+            }
+            if (trimmed.startsWith(STUB)) {
+                String indent = line.substring(0, line.indexOf(STUB));
+                line = indent + trimmed.substring(STUB.length());
+            }
+            out.append(line);
+            if (n < lines.length - 1) {
+                out.append('\n');
+            }
+        }
+        if (inSolution) {
+            throw new IllegalArgumentException(fileName + ":" + beganAt + ": " + BEGIN + " is never ended");
+        }
+        return out.toString();
+    }
+}

@@ -1,0 +1,205 @@
+package ray.grading;
+
+import com.google.gson.Gson;
+import com.google.gson.reflect.TypeToken;
+import java.io.File;
+import java.io.IOException;
+import java.lang.reflect.Type;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+/**
+ * Runs graded tests in a separate JVM ({@link TestRunnerMain}) and survives whatever student code
+ * does there: a test that calls System.exit, crashes the JVM or hangs past {@link #HARD_LIMIT_SECONDS}
+ * is failed, and the JVM is started again for the tests that have not run yet. JUnit's own per-test
+ * timeouts catch most infinite loops first; this is the backstop for loops that ignore interrupts.
+ */
+public final class TestProcess {
+    /** No single test may keep the JVM busy longer than this (render tests have a 60 s JUnit limit). */
+    public static final int HARD_LIMIT_SECONDS = 120;
+    /** Heap for the test JVM: unbounded allocation in student code fails its test, not the grader. */
+    static final String HEAP = "-Xmx1g";
+    private static final int MAX_RESTARTS = 100;
+    private static final Gson GSON = new Gson();
+    private static final Type EVENT = new TypeToken<Map<String, Object>>() { }.getType();
+
+    private final Path projectDir;
+    private final Path classesDir;
+    private final String classpath;
+    private final Path workDir;
+    private int hardLimitSeconds = HARD_LIMIT_SECONDS;
+
+    /**
+     * @param projectDir the project tree, the tests' working folder (so that scenes/ resolves)
+     * @param classesDir the compiled project (main and test classes)
+     * @param classpath  its libraries (JUnit, ...)
+     * @param workDir    where the events and output files go
+     */
+    public TestProcess(Path projectDir, Path classesDir, String classpath, Path workDir) {
+        this.projectDir = projectDir;
+        this.classesDir = classesDir;
+        this.classpath = classpath;
+        this.workDir = workDir;
+    }
+
+    /** For tests of the grader itself: a shorter backstop. */
+    TestProcess withHardLimitSeconds(int seconds) {
+        this.hardLimitSeconds = seconds;
+        return this;
+    }
+
+    /** The test classes in the compiled project: every top-level class whose name ends in "Test". */
+    public List<String> testClasses() throws IOException {
+        try (Stream<Path> walk = Files.walk(classesDir)) {
+            return walk.map(p -> classesDir.relativize(p).toString().replace(File.separatorChar, '/'))
+                    .filter(n -> n.endsWith("Test.class") && !n.contains("$"))
+                    .map(n -> n.substring(0, n.length() - ".class".length()).replace('/', '.'))
+                    .sorted()
+                    .collect(Collectors.toList());
+        }
+    }
+
+    /** The graded tests the classes hold (for task {@code task}, or all when null), without running them. */
+    public List<TestOutcome> list(Integer task) throws IOException, InterruptedException {
+        Path events = workDir.resolve("list-events.jsonl");
+        Files.deleteIfExists(events);
+        launch(events, task, Set.of(), true).waitFor();
+        List<TestOutcome> tests = new ArrayList<>();
+        for (Map<String, Object> e : read(events)) {
+            if ("test".equals(e.get("event"))) {
+                tests.add(outcome(e, false, "not run"));
+            }
+        }
+        return tests;
+    }
+
+    /** Runs the graded tests (of {@code task}, or all when null), in order, and returns every outcome. */
+    public List<TestOutcome> run(Integer task) throws IOException, InterruptedException {
+        Files.createDirectories(workDir);
+        Map<String, TestOutcome> results = new LinkedHashMap<>();
+        Set<String> skip = new LinkedHashSet<>();
+        for (int attempt = 0; attempt <= MAX_RESTARTS; attempt++) {
+            // A file per JVM, so that each attempt's unfinished test is told apart from earlier ones.
+            Path events = workDir.resolve("events-" + attempt + ".jsonl");
+            Files.deleteIfExists(events);
+            Process child = launch(events, task, skip, false);
+            boolean finished = watch(child, events);
+            Map<String, Map<String, Object>> started = new LinkedHashMap<>();
+            boolean done = false;
+            String exited = null;
+            for (Map<String, Object> e : read(events)) {
+                String test = (String) e.get("test");
+                switch (String.valueOf(e.get("event"))) {
+                    case "start":
+                        started.put(test, e);
+                        break;
+                    case "finish":
+                        Map<String, Object> start = started.remove(test);
+                        if (start != null) {
+                            start.putAll(e);
+                            results.put(test, outcome(start, (Boolean) e.get("passed"), (String) e.get("message")));
+                        }
+                        break;
+                    case "exit":
+                        exited = test;
+                        break;
+                    case "done":
+                        done = true;
+                        break;
+                    default:
+                        break;
+                }
+            }
+            if (done) {
+                return new ArrayList<>(results.values());
+            }
+            // The JVM ended (or was stopped) during the one test that started without finishing.
+            for (Map.Entry<String, Map<String, Object>> open : started.entrySet()) {
+                String why = !finished ? "stopped after " + hardLimitSeconds + " s: the test never finished (an infinite loop?)"
+                        : open.getKey().equals(exited) ? "the code under test called System.exit, which ended the test JVM"
+                        : "the test JVM crashed during this test (exit code " + child.exitValue() + ")";
+                results.put(open.getKey(), outcome(open.getValue(), false, why));
+            }
+            if (started.isEmpty()) {
+                throw new IllegalStateException("the test JVM ended without running a test (exit code "
+                        + child.exitValue() + "); see " + workDir.resolve("test-output.txt"));
+            }
+            skip.addAll(results.keySet());
+        }
+        throw new IllegalStateException("gave up after " + MAX_RESTARTS + " restarts of the test JVM");
+    }
+
+    private Process launch(Path events, Integer task, Set<String> skip, boolean listOnly) throws IOException {
+        String self = Path.of(java.net.URI.create(
+                TestRunnerMain.class.getProtectionDomain().getCodeSource().getLocation().toString())).toString();
+        List<String> command = new ArrayList<>(List.of(
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(), HEAP,
+                "-Djava.awt.headless=true",
+                "-cp", classesDir + File.pathSeparator + classpath + File.pathSeparator + self,
+                TestRunnerMain.class.getName(), events.toString()));
+        if (task != null) {
+            command.add("--task");
+            command.add(task.toString());
+        }
+        for (String id : skip) {
+            command.add("--skip");
+            command.add(id);
+        }
+        if (listOnly) {
+            command.add("--list");
+        }
+        command.addAll(testClasses());
+        Path output = workDir.resolve("test-output.txt");
+        Files.createDirectories(workDir);
+        // Tests run in the tree's folder, so that relative paths such as scenes/ resolve there.
+        return new ProcessBuilder(command).directory(projectDir.toFile()).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.appendTo(output.toFile())).start();
+    }
+
+    /** Waits for the child, stopping it when one test runs past the hard limit; false when it had to be stopped. */
+    private boolean watch(Process child, Path events) throws IOException, InterruptedException {
+        int linesSeen = -1;
+        long lastProgress = System.nanoTime();
+        while (!child.waitFor(200, TimeUnit.MILLISECONDS)) {
+            int lines = Files.exists(events) ? Files.readAllLines(events, StandardCharsets.UTF_8).size() : 0;
+            if (lines != linesSeen) {
+                linesSeen = lines;
+                lastProgress = System.nanoTime();
+            } else if (System.nanoTime() - lastProgress > TimeUnit.SECONDS.toNanos(hardLimitSeconds)) {
+                child.destroyForcibly().waitFor();
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static List<Map<String, Object>> read(Path events) throws IOException {
+        List<Map<String, Object>> list = new ArrayList<>();
+        if (Files.exists(events)) {
+            for (String line : Files.readAllLines(events, StandardCharsets.UTF_8)) {
+                if (!line.isBlank()) {
+                    list.add(GSON.fromJson(line, EVENT));
+                }
+            }
+        }
+        return list;
+    }
+
+    private static TestOutcome outcome(Map<String, Object> e, boolean passed, String message) {
+        Object seconds = e.get("seconds");
+        return new TestOutcome((String) e.get("test"), (String) e.get("class"), (String) e.get("method"),
+                ((Number) e.get("task")).intValue(), (String) e.get("title"), ((Number) e.get("points")).doubleValue(),
+                (String) e.get("visibility"), passed, message == null ? "" : message,
+                seconds == null ? 0 : ((Number) seconds).doubleValue());
+    }
+}

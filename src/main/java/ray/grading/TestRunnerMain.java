@@ -1,0 +1,237 @@
+package ray.grading;
+
+import com.google.gson.Gson;
+import java.io.IOException;
+import java.io.Writer;
+import java.lang.annotation.Annotation;
+import java.lang.reflect.Method;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.junit.runner.Description;
+import org.junit.runner.JUnitCore;
+import org.junit.runner.Request;
+import org.junit.runner.manipulation.Filter;
+import org.junit.runner.notification.Failure;
+import org.junit.runner.notification.RunListener;
+
+/**
+ * Runs graded tests in a child JVM for {@link TestProcess}, reporting each as one JSON line in an
+ * events file as it starts and finishes, so that the parent knows which test was running if the
+ * JVM dies (System.exit, a crash) or hangs.
+ *
+ * <p>Usage: {@code TestRunnerMain EVENTS [--task N] [--skip ID]... [--list] CLASS...}. With
+ * {@code --list} it only reports the graded tests it would run.
+ */
+public final class TestRunnerMain {
+    private static final String POINTS = "ray.testing.Points";
+    private static final Gson GSON = new Gson();
+
+    private final Writer events;
+    private volatile String running;
+
+    private TestRunnerMain(Writer events) {
+        this.events = events;
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path eventsFile = Path.of(args[0]);
+        Integer task = null;
+        Set<String> skip = new HashSet<>();
+        boolean listOnly = false;
+        List<String> classes = new ArrayList<>();
+        for (int i = 1; i < args.length; i++) {
+            switch (args[i]) {
+                case "--task":
+                    task = Integer.parseInt(args[++i]);
+                    break;
+                case "--skip":
+                    skip.add(args[++i]);
+                    break;
+                case "--list":
+                    listOnly = true;
+                    break;
+                default:
+                    classes.add(args[i]);
+            }
+        }
+        try (Writer events = Files.newBufferedWriter(eventsFile, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
+                StandardOpenOption.APPEND)) {
+            TestRunnerMain runner = new TestRunnerMain(events);
+            // System.exit in a test ends the JVM; say which test did it before it goes.
+            Runtime.getRuntime().addShutdownHook(new Thread(runner::reportExitDuringTest));
+            runner.run(classes, task, skip, listOnly);
+            runner.write(Map.of("event", "done"));
+        }
+        // Stray threads of timed-out tests must not keep this JVM alive.
+        Runtime.getRuntime().halt(0);
+    }
+
+    private void run(List<String> classNames, Integer task, Set<String> skip, boolean listOnly) throws Exception {
+        JUnitCore core = new JUnitCore();
+        core.addListener(new Reporter());
+        for (String name : classNames) {
+            Class<?> type = Class.forName(name);
+            if (java.lang.reflect.Modifier.isAbstract(type.getModifiers())) {
+                continue;
+            }
+            Filter filter = new Filter() {
+                @Override
+                public boolean shouldRun(Description d) {
+                    if (!d.isTest()) {
+                        return d.getChildren().stream().anyMatch(this::shouldRun);
+                    }
+                    Map<String, Object> grade = grading(d);
+                    return grade != null && (task == null || grade.get("task").equals(task)) && !skip.contains(idOf(d));
+                }
+
+                @Override
+                public String describe() {
+                    return "graded tests";
+                }
+            };
+            Request request = Request.aClass(type).filterWith(filter);
+            if (listOnly) {
+                listTests(request.getRunner().getDescription());
+            } else if (filter.shouldRun(Request.aClass(type).getRunner().getDescription())) {
+                core.run(request);
+            }
+        }
+    }
+
+    private void listTests(Description d) throws IOException {
+        if (d.isTest()) {
+            Map<String, Object> e = grading(d);
+            if (e != null && !d.getDisplayName().startsWith("initializationError")) {
+                e.put("event", "test");
+                e.put("test", idOf(d));
+                write(e);
+            }
+        }
+        for (Description child : d.getChildren()) {
+            listTests(child);
+        }
+    }
+
+    /** "ClassName#method": JUnit's description names a test "method(ClassName)". */
+    static String idOf(Description d) {
+        return d.getClassName() + "#" + d.getMethodName();
+    }
+
+    /** The test's @Points as task number, task title, points and visibility; null for ungraded tests. */
+    private static Map<String, Object> grading(Description d) {
+        Annotation points = find(d.getAnnotations());
+        if (points == null && d.getTestClass() != null) {
+            points = find(List.of(d.getTestClass().getAnnotations()));
+        }
+        if (points == null) {
+            return null;
+        }
+        try {
+            Object task = call(points, "task");
+            Map<String, Object> m = new LinkedHashMap<>();
+            m.put("task", task.getClass().getField("number").get(task));
+            m.put("title", task.getClass().getField("title").get(task));
+            m.put("points", call(points, "value"));
+            Object visibility = call(points, "visibility");
+            m.put("visibility", visibility.getClass().getField("gradescope").get(visibility));
+            m.put("class", d.getClassName());
+            m.put("method", d.getMethodName());
+            return m;
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException("cannot read @Points of " + d, e);
+        }
+    }
+
+    private static Annotation find(Iterable<Annotation> annotations) {
+        for (Annotation a : annotations) {
+            if (a.annotationType().getName().equals(POINTS)) {
+                return a;
+            }
+        }
+        return null;
+    }
+
+    private static Object call(Annotation a, String name) throws ReflectiveOperationException {
+        Method m = a.annotationType().getMethod(name);
+        return m.invoke(a);
+    }
+
+    private synchronized void write(Map<String, Object> event) throws IOException {
+        events.write(GSON.toJson(event));
+        events.write('\n');
+        events.flush();
+    }
+
+    private void reportExitDuringTest() {
+        String test = running;
+        if (test != null) {
+            try {
+                write(Map.of("event", "exit", "test", test));
+            } catch (IOException e) {
+                // The parent reports the test as a crash instead.
+            }
+        }
+    }
+
+    private final class Reporter extends RunListener {
+        private final Map<String, Long> started = new LinkedHashMap<>();
+        private final Map<String, String> failures = new LinkedHashMap<>();
+
+        @Override
+        public void testStarted(Description d) throws IOException {
+            String id = idOf(d);
+            running = id;
+            started.put(id, System.nanoTime());
+            Map<String, Object> e = grading(d);
+            e.put("event", "start");
+            e.put("test", id);
+            write(e);
+        }
+
+        @Override
+        public void testFailure(Failure failure) {
+            failures.put(idOf(failure.getDescription()), explain(failure.getException()));
+        }
+
+        @Override
+        public void testAssumptionFailure(Failure failure) {
+            failures.put(idOf(failure.getDescription()), "skipped: " + failure.getMessage());
+        }
+
+        @Override
+        public void testFinished(Description d) throws IOException {
+            String id = idOf(d);
+            Map<String, Object> e = new LinkedHashMap<>();
+            e.put("event", "finish");
+            e.put("test", id);
+            e.put("passed", !failures.containsKey(id));
+            e.put("message", failures.getOrDefault(id, ""));
+            e.put("seconds", (System.nanoTime() - started.getOrDefault(id, System.nanoTime())) / 1e9);
+            write(e);
+            running = null;
+        }
+    }
+
+    /** The failure's message and where in the project's code it happened (a few frames, not the whole trace). */
+    static String explain(Throwable t) {
+        // An assertion's message says it all; any other throwable also needs its class ("OutOfMemoryError: ...").
+        StringBuilder s = new StringBuilder(t instanceof AssertionError && t.getMessage() != null ? t.getMessage() : t.toString());
+        int frames = 0;
+        for (StackTraceElement f : t.getStackTrace()) {
+            String c = f.getClassName();
+            if (c.startsWith("ray.") && !c.startsWith("ray.testing.") && !c.startsWith("ray.grading.") && frames < 6) {
+                s.append("\n    at ").append(f);
+                frames++;
+            }
+        }
+        return s.toString();
+    }
+}

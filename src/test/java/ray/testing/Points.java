@@ -1,0 +1,23 @@
+package ray.testing;
+
+import java.lang.annotation.ElementType;
+import java.lang.annotation.Retention;
+import java.lang.annotation.RetentionPolicy;
+import java.lang.annotation.Target;
+
+/**
+ * Marks a test as graded: it is worth {@code value} points toward {@code task}. On a class, it
+ * applies to every test method of the class that has no {@code @Points} of its own.
+ *
+ * <p>Tests under src/test/java ship to students and must be {@link Visibility#VISIBLE}; hidden
+ * tests live under src/instructorTest/java and never leave the instructor's tree.
+ */
+@Retention(RetentionPolicy.RUNTIME)
+@Target({ElementType.TYPE, ElementType.METHOD})
+public @interface Points {
+    double value();
+
+    StudentTask task();
+
+    Visibility visibility() default Visibility.VISIBLE;
+}

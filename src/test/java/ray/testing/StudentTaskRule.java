@@ -1,0 +1,76 @@
+package ray.testing;
+
+import java.util.concurrent.TimeUnit;
+import org.junit.rules.TestRule;
+import org.junit.rules.Timeout;
+import org.junit.runner.Description;
+import org.junit.runners.model.Statement;
+
+/**
+ * The rule every graded test class uses: a time limit per test (an infinite loop in student code
+ * costs that test only), and failure messages that say which task failed and where to work.
+ *
+ * <pre>{@code @Rule public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);}</pre>
+ */
+public final class StudentTaskRule implements TestRule {
+    /** Seconds a unit test of student code may take: a correct solution needs milliseconds. */
+    public static final int UNIT_TEST_SECONDS = 10;
+
+    private final StudentTask task;
+    private final int seconds;
+
+    private StudentTaskRule(StudentTask task, int seconds) {
+        this.task = task;
+        this.seconds = seconds;
+    }
+
+    public static StudentTaskRule of(StudentTask task) {
+        return new StudentTaskRule(task, UNIT_TEST_SECONDS);
+    }
+
+    /** The same rule with a longer limit, e.g. for whole-scene renders. */
+    public StudentTaskRule withTimeoutSeconds(int limit) {
+        return new StudentTaskRule(task, limit);
+    }
+
+    public StudentTask task() {
+        return task;
+    }
+
+    @Override
+    public Statement apply(Statement base, Description description) {
+        Statement limited = Timeout.builder().withTimeout(seconds, TimeUnit.SECONDS).withLookingForStuckThread(true)
+                .build().apply(base, description);
+        return new Statement() {
+            @Override
+            public void evaluate() throws Throwable {
+                try {
+                    limited.evaluate();
+                } catch (AssertionError e) {
+                    throw explained(e.getMessage(), e);
+                } catch (org.junit.runners.model.TestTimedOutException e) {
+                    throw explained("took longer than " + seconds + " s: is there a loop that never ends?", e);
+                } catch (Exception | StackOverflowError | OutOfMemoryError e) {
+                    throw explained("your code threw " + e + where(e), e);
+                }
+            }
+        };
+    }
+
+    private AssertionError explained(String message, Throwable cause) {
+        AssertionError error = new AssertionError("[" + task.label() + "] " + message + "\n    Work on the TODO(Task "
+                + task.number + ") comments in " + String.join(" and ", task.files) + ".", cause);
+        error.setStackTrace(cause.getStackTrace());
+        return error;
+    }
+
+    /** " at Sphere.java:57" for the first frame in the project's own code, if any. */
+    private static String where(Throwable e) {
+        for (StackTraceElement frame : e.getStackTrace()) {
+            if (frame.getClassName().startsWith("ray.") && !frame.getClassName().startsWith("ray.testing.")) {
+                return " at " + frame.getFileName() + ":" + frame.getLineNumber();
+            }
+        }
+        return "";
+    }
+}
