@@ -2,6 +2,7 @@ package ray.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -23,6 +24,13 @@ import ray.scene.SceneLoader;
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Renders each scene (a folder means every *.xml in it, recursively) to DIR/<scene-name>.png.")
 public final class RenderCommand implements Callable<Integer> {
+    /**
+     * The file that marks a folder of reference renders (scenes/reference, written by the
+     * instructor's {@code gradle references}). {@code ray1 render} refuses to write there, so a
+     * student's render can never overwrite the images it is graded against.
+     */
+    public static final String REFERENCE_MARKER = ".references";
+
     @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "Output folder (default: ${DEFAULT-VALUE}).")
     Path output = Path.of("out");
 
@@ -54,6 +62,11 @@ public final class RenderCommand implements Callable<Integer> {
         }
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
+        if (Files.exists(output.resolve(REFERENCE_MARKER))) {
+            err.println("error: " + output + " holds the reference images (it has a " + REFERENCE_MARKER
+                    + " file); render somewhere else, e.g. -o out");
+            return 1;
+        }
         List<Path> files = SceneFiles.expand(scenes);
         if (files.isEmpty()) {
             err.println("error: no scene files (*.xml) found in " + scenes);

@@ -15,7 +15,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
@@ -38,6 +37,7 @@ public final class TestProcess {
     private final String classpath;
     private final Path workDir;
     private int hardLimitSeconds = HARD_LIMIT_SECONDS;
+    private boolean includeUngraded;
 
     /**
      * @param projectDir the project tree, the tests' working folder (so that scenes/ resolves)
@@ -58,15 +58,32 @@ public final class TestProcess {
         return this;
     }
 
-    /** The test classes in the compiled project: every top-level class whose name ends in "Test". */
+    /** Also run the tests without @Points, reported as task 0 worth nothing (to check a whole tree, not to grade). */
+    public TestProcess withUngradedTests() {
+        this.includeUngraded = true;
+        return this;
+    }
+
+    /** Where test sources live; only classes from there are tests (a main class may end in "Test" too). */
+    private static final List<String> TEST_SOURCES = List.of("src/test/java", "src/instructorTest/java");
+
+    /** The test classes: every top-level *Test.java under the project's test source folders. */
     public List<String> testClasses() throws IOException {
-        try (Stream<Path> walk = Files.walk(classesDir)) {
-            return walk.map(p -> classesDir.relativize(p).toString().replace(File.separatorChar, '/'))
-                    .filter(n -> n.endsWith("Test.class") && !n.contains("$"))
-                    .map(n -> n.substring(0, n.length() - ".class".length()).replace('/', '.'))
-                    .sorted()
-                    .collect(Collectors.toList());
+        List<String> classes = new ArrayList<>();
+        for (String folder : TEST_SOURCES) {
+            Path root = projectDir.resolve(folder);
+            if (!Files.isDirectory(root)) {
+                continue;
+            }
+            try (Stream<Path> walk = Files.walk(root)) {
+                walk.map(p -> root.relativize(p).toString().replace(File.separatorChar, '/'))
+                        .filter(n -> n.endsWith("Test.java"))
+                        .map(n -> n.substring(0, n.length() - ".java".length()).replace('/', '.'))
+                        .forEach(classes::add);
+            }
         }
+        classes.sort(null);
+        return classes;
     }
 
     /** The graded tests the classes hold (for task {@code task}, or all when null), without running them. */
@@ -157,6 +174,9 @@ public final class TestProcess {
         }
         if (listOnly) {
             command.add("--list");
+        }
+        if (includeUngraded) {
+            command.add("--include-ungraded");
         }
         command.addAll(testClasses());
         Path output = workDir.resolve("test-output.txt");

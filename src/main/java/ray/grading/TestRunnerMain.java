@@ -27,18 +27,21 @@ import org.junit.runner.notification.RunListener;
  * events file as it starts and finishes, so that the parent knows which test was running if the
  * JVM dies (System.exit, a crash) or hangs.
  *
- * <p>Usage: {@code TestRunnerMain EVENTS [--task N] [--skip ID]... [--list] CLASS...}. With
- * {@code --list} it only reports the graded tests it would run.
+ * <p>Usage: {@code TestRunnerMain EVENTS [--task N] [--skip ID]... [--list] [--include-ungraded] CLASS...}.
+ * With {@code --list} it only reports the graded tests it would run; with {@code --include-ungraded}
+ * it also runs the tests without {@code @Points} (as task 0, worth nothing).
  */
 public final class TestRunnerMain {
     private static final String POINTS = "ray.testing.Points";
     private static final Gson GSON = new Gson();
 
     private final Writer events;
+    private final boolean includeUngraded;
     private volatile String running;
 
-    private TestRunnerMain(Writer events) {
+    private TestRunnerMain(Writer events, boolean includeUngraded) {
         this.events = events;
+        this.includeUngraded = includeUngraded;
     }
 
     public static void main(String[] args) throws Exception {
@@ -46,6 +49,7 @@ public final class TestRunnerMain {
         Integer task = null;
         Set<String> skip = new HashSet<>();
         boolean listOnly = false;
+        boolean includeUngraded = false;
         List<String> classes = new ArrayList<>();
         for (int i = 1; i < args.length; i++) {
             switch (args[i]) {
@@ -58,13 +62,16 @@ public final class TestRunnerMain {
                 case "--list":
                     listOnly = true;
                     break;
+                case "--include-ungraded":
+                    includeUngraded = true;
+                    break;
                 default:
                     classes.add(args[i]);
             }
         }
         try (Writer events = Files.newBufferedWriter(eventsFile, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
                 StandardOpenOption.APPEND)) {
-            TestRunnerMain runner = new TestRunnerMain(events);
+            TestRunnerMain runner = new TestRunnerMain(events, includeUngraded);
             // System.exit in a test ends the JVM; say which test did it before it goes.
             Runtime.getRuntime().addShutdownHook(new Thread(runner::reportExitDuringTest));
             runner.run(classes, task, skip, listOnly);
@@ -88,7 +95,7 @@ public final class TestRunnerMain {
                     if (!d.isTest()) {
                         return d.getChildren().stream().anyMatch(this::shouldRun);
                     }
-                    Map<String, Object> grade = grading(d);
+                    Map<String, Object> grade = metadata(d);
                     return grade != null && (task == null || grade.get("task").equals(task)) && !skip.contains(idOf(d));
                 }
 
@@ -108,7 +115,7 @@ public final class TestRunnerMain {
 
     private void listTests(Description d) throws IOException {
         if (d.isTest()) {
-            Map<String, Object> e = grading(d);
+            Map<String, Object> e = metadata(d);
             if (e != null && !d.getDisplayName().startsWith("initializationError")) {
                 e.put("event", "test");
                 e.put("test", idOf(d));
@@ -123,6 +130,21 @@ public final class TestRunnerMain {
     /** "ClassName#method": JUnit's description names a test "method(ClassName)". */
     static String idOf(Description d) {
         return d.getClassName() + "#" + d.getMethodName();
+    }
+
+    /** What is reported of a test: its grading, or for an ungraded test (when those run) task 0 and no points. */
+    private Map<String, Object> metadata(Description d) {
+        Map<String, Object> m = grading(d);
+        if (m == null && includeUngraded) {
+            m = new LinkedHashMap<>();
+            m.put("task", 0);
+            m.put("title", "ungraded");
+            m.put("points", 0.0);
+            m.put("visibility", "visible");
+            m.put("class", d.getClassName());
+            m.put("method", d.getMethodName());
+        }
+        return m;
     }
 
     /** The test's @Points as task number, task title, points and visibility; null for ungraded tests. */
@@ -190,7 +212,7 @@ public final class TestRunnerMain {
             String id = idOf(d);
             running = id;
             started.put(id, System.nanoTime());
-            Map<String, Object> e = grading(d);
+            Map<String, Object> e = metadata(d);
             e.put("event", "start");
             e.put("test", id);
             write(e);

@@ -11,29 +11,29 @@ import ray.math.Vec3;
  * leaves to, by an amount that scales with the hit point's magnitude (the form Mitsuba uses,
  * (1 + max|p_i|)·ε), and a shadow ray stops just short of its light.
  */
-final class SecondaryRays {
+public final class SecondaryRays {
     /** ε of the offset: far above double rounding (~1e-16 relative), far below any scene's features. */
-    static final double RELATIVE_OFFSET = 1e-9;
+    public static final double RELATIVE_OFFSET = 1e-9;
     /** A shadow ray covers the segment to the light up to this fraction, so the light itself never blocks. */
-    static final double SHADOW_END = 1 - 1e-9;
+    public static final double SHADOW_END = 1 - 1e-9;
 
     private SecondaryRays() {
     }
 
     /** The hit point pushed off the surface toward the side that {@code direction} points to. */
-    static Vec3 offsetOrigin(IntersectionRecord hit, Vec3 direction) {
+    public static Vec3 offsetOrigin(IntersectionRecord hit, Vec3 direction) {
         double offset = RELATIVE_OFFSET * (1 + hit.location.maxAbs());
         double side = hit.normal.dot(direction) >= 0 ? offset : -offset;
         return hit.location.plusScaled(side, hit.normal);
     }
 
     /** The segment from just off the hit to just short of the light: r(t) for 0 < t < SHADOW_END. */
-    static Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
+    public static Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
         Vec3 origin = offsetOrigin(hit, lightPosition.minus(hit.location));
         return new Ray(origin, lightPosition.minus(origin), 0, SHADOW_END);
     }
 
-    static Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
+    public static Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
         return new Ray(offsetOrigin(hit, direction), direction);
     }
 }

@@ -54,7 +54,7 @@ public final class ObjReader {
         if (triangleCount == 0) {
             throw new SceneException(file, Math.max(1, lineNumber), 1, "the mesh has no faces; expected at least one 'f' line");
         }
-        return new MeshData(positions.build().toArray(), normals.build().toArray(), triangles.build().toArray(),
+        return new MeshData(file, positions.build().toArray(), normals.build().toArray(), triangles.build().toArray(),
                 anyNormals ? triangleNormals.build().toArray() : null);
     }
 

@@ -26,6 +26,18 @@ public class Phong extends DirectLighting {
         this.exponent = exponent;
     }
 
+    public Vec3 getDiffuseColor() {
+        return diffuseColor;
+    }
+
+    public Vec3 getSpecularColor() {
+        return specularColor;
+    }
+
+    public double getExponent() {
+        return exponent;
+    }
+
     @Override
     protected Vec3 reflectance(Vec3 normal, Vec3 toLight, Vec3 toEye) {
         Vec3 half = toLight.plus(toEye).normalized();

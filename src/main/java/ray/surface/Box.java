@@ -18,6 +18,14 @@ public class Box extends Group {
         this.maxPt = maxPt;
     }
 
+    public Vec3 getMinPt() {
+        return minPt;
+    }
+
+    public Vec3 getMaxPt() {
+        return maxPt;
+    }
+
     @Override
     public Surface complete() {
         if (!(minPt.x < maxPt.x && minPt.y < maxPt.y && minPt.z < maxPt.z)) {

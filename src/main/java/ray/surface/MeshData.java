@@ -1,11 +1,15 @@
 package ray.surface;
 
+import java.nio.file.Path;
+
 /**
  * Triangle-mesh data in flat arrays, as a file reader produces it: positions (x, y, z per vertex),
  * optional normals, and three vertex indices per triangle (with three normal indices when the
  * faces carry normals).
  */
 public final class MeshData {
+    /** The file the mesh was read from, or null for a mesh made in code. */
+    public final Path source;
     public final double[] positions;
     public final double[] normals;
     public final int[] triangles;
@@ -13,6 +17,11 @@ public final class MeshData {
     public final int[] triangleNormals;
 
     public MeshData(double[] positions, double[] normals, int[] triangles, int[] triangleNormals) {
+        this(null, positions, normals, triangles, triangleNormals);
+    }
+
+    public MeshData(Path source, double[] positions, double[] normals, int[] triangles, int[] triangleNormals) {
+        this.source = source;
         this.positions = positions;
         this.normals = normals;
         this.triangles = triangles;

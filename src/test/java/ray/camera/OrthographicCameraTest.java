@@ -1,16 +1,27 @@
 package ray.camera;
 
-import static ray.camera.PerspectiveCameraTest.assertRay;
+import static ray.camera.CameraRays.assertRay;
 import static ray.testing.Asserts.v;
 
+import org.junit.Rule;
 import org.junit.Test;
+import ray.testing.Points;
+import ray.testing.StudentTask;
+import ray.testing.StudentTaskRule;
 
 /**
  * Checks OrthographicCamera.generateRay against rays computed by hand from the conventions:
  * origin = viewPoint + s·u + t·v, direction = −w, with s = (u − ½)·viewWidth and
  * t = (v − ½)·viewHeight, and a segment from 0 to +∞.
  */
+@Points(value = 1, task = StudentTask.CAMERA)
 public class OrthographicCameraTest {
+    @Rule
+    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CAMERA);
+
+    private static final String DEFAULT = "the default OrthographicCamera (at the origin looking down −z, 1×1 plane)";
+    private static final String ROTATED = "the OrthographicCamera at (1,2,3) looking along +x with +z up, 4×2 plane";
+
     private static OrthographicCamera defaultCamera() {
         OrthographicCamera camera = new OrthographicCamera();
         camera.complete();
@@ -34,37 +45,39 @@ public class OrthographicCameraTest {
 
     @Test
     public void defaultCameraCenterRayStartsAtViewPoint() {
-        assertRay(v(0, 0, 0), v(0, 0, -1), defaultCamera().generateRay(0.5, 0.5));
+        assertRay(DEFAULT, defaultCamera(), 0.5, 0.5, v(0, 0, 0), v(0, 0, -1));
     }
 
     @Test
+    @Points(value = 2, task = StudentTask.CAMERA)
     public void defaultCameraCornerRaysAreParallelAndStartOnTheImagePlaneCorners() {
         OrthographicCamera camera = defaultCamera();
-        assertRay(v(-0.5, -0.5, 0), v(0, 0, -1), camera.generateRay(0, 0));
-        assertRay(v(0.5, -0.5, 0), v(0, 0, -1), camera.generateRay(1, 0));
-        assertRay(v(-0.5, 0.5, 0), v(0, 0, -1), camera.generateRay(0, 1));
-        assertRay(v(0.5, 0.5, 0), v(0, 0, -1), camera.generateRay(1, 1));
+        assertRay(DEFAULT, camera, 0, 0, v(-0.5, -0.5, 0), v(0, 0, -1));
+        assertRay(DEFAULT, camera, 1, 0, v(0.5, -0.5, 0), v(0, 0, -1));
+        assertRay(DEFAULT, camera, 0, 1, v(-0.5, 0.5, 0), v(0, 0, -1));
+        assertRay(DEFAULT, camera, 1, 1, v(0.5, 0.5, 0), v(0, 0, -1));
     }
 
     @Test
     public void rotatedCameraCenterRayStartsAtViewPoint() {
-        assertRay(v(1, 2, 3), v(1, 0, 0), rotatedCamera().generateRay(0.5, 0.5));
+        assertRay(ROTATED, rotatedCamera(), 0.5, 0.5, v(1, 2, 3), v(1, 0, 0));
     }
 
     @Test
+    @Points(value = 2, task = StudentTask.CAMERA)
     public void rotatedCameraCornerRaysUseItsBasisAndNonSquarePlane() {
         OrthographicCamera camera = rotatedCamera();
         // (0,0): s = −2, t = −1 → (1, 4, 2); the other corners flip the signs of s and t.
-        assertRay(v(1, 4, 2), v(1, 0, 0), camera.generateRay(0, 0));
-        assertRay(v(1, 0, 2), v(1, 0, 0), camera.generateRay(1, 0));
-        assertRay(v(1, 4, 4), v(1, 0, 0), camera.generateRay(0, 1));
-        assertRay(v(1, 0, 4), v(1, 0, 0), camera.generateRay(1, 1));
+        assertRay(ROTATED, camera, 0, 0, v(1, 4, 2), v(1, 0, 0));
+        assertRay(ROTATED, camera, 1, 0, v(1, 0, 2), v(1, 0, 0));
+        assertRay(ROTATED, camera, 0, 1, v(1, 4, 4), v(1, 0, 0));
+        assertRay(ROTATED, camera, 1, 1, v(1, 0, 4), v(1, 0, 0));
     }
 
     @Test
     public void rotatedCameraOffCenterPointDistinguishesUFromV() {
         // (0.25, 0.75): s = −1, t = 0.5 → origin (1, 3, 3.5).
-        assertRay(v(1, 3, 3.5), v(1, 0, 0), rotatedCamera().generateRay(0.25, 0.75));
+        assertRay(ROTATED, rotatedCamera(), 0.25, 0.75, v(1, 3, 3.5), v(1, 0, 0));
     }
 
     @Test
@@ -74,6 +87,7 @@ public class OrthographicCameraTest {
         camera.setViewUp(v(0, 0, -1));
         camera.complete();
         // w = (0,1,0), u = normalize((0,0,−1) × (0,1,0)) = (1,0,0), v = w × u = (0,0,−1).
-        assertRay(v(0.5, 0, 0.5), v(0, -1, 0), camera.generateRay(1, 0));
+        assertRay("the OrthographicCamera with viewDir (0,−5,0), viewUp (0,0,−1): direction −w = (0,−1,0)",
+                camera, 1, 0, v(0.5, 0, 0.5), v(0, -1, 0));
     }
 }

@@ -1,21 +1,27 @@
 package ray.camera;
 
-import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertNotNull;
-import static ray.testing.Asserts.assertVec;
+import static ray.camera.CameraRays.assertRay;
 import static ray.testing.Asserts.v;
 
+import org.junit.Rule;
 import org.junit.Test;
-import ray.Ray;
 import ray.math.Vec3;
+import ray.testing.Points;
+import ray.testing.StudentTask;
+import ray.testing.StudentTaskRule;
 
 /**
  * Checks PerspectiveCamera.generateRay against rays computed by hand from the conventions:
  * origin = viewPoint, direction = s·u + t·v − projDistance·w with s = (u − ½)·viewWidth and
  * t = (v − ½)·viewHeight, and a segment from 0 to +∞.
  */
+@Points(value = 1, task = StudentTask.CAMERA)
 public class PerspectiveCameraTest {
-    private static final double TOL = 1e-14;
+    @Rule
+    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CAMERA);
+
+    private static final String DEFAULT = "the default PerspectiveCamera (at the origin looking down −z, 1×1 plane at distance 1)";
+    private static final String ROTATED = "the PerspectiveCamera at (1,2,3) looking along +x with +z up, 4×2 plane at distance 2";
 
     /** The default camera: basis u = (1,0,0), v = (0,1,0), w = (0,0,1), a 1×1 image plane at distance 1. */
     private static PerspectiveCamera defaultCamera() {
@@ -43,37 +49,39 @@ public class PerspectiveCameraTest {
 
     @Test
     public void defaultCameraCenterRayLooksDownMinusZ() {
-        assertRay(Vec3.ZERO, v(0, 0, -1), defaultCamera().generateRay(0.5, 0.5));
+        assertRay(DEFAULT, defaultCamera(), 0.5, 0.5, Vec3.ZERO, v(0, 0, -1));
     }
 
     @Test
+    @Points(value = 2, task = StudentTask.CAMERA)
     public void defaultCameraCornerRaysGoThroughImagePlaneCorners() {
         PerspectiveCamera camera = defaultCamera();
-        assertRay(Vec3.ZERO, v(-0.5, -0.5, -1), camera.generateRay(0, 0));
-        assertRay(Vec3.ZERO, v(0.5, -0.5, -1), camera.generateRay(1, 0));
-        assertRay(Vec3.ZERO, v(-0.5, 0.5, -1), camera.generateRay(0, 1));
-        assertRay(Vec3.ZERO, v(0.5, 0.5, -1), camera.generateRay(1, 1));
+        assertRay(DEFAULT, camera, 0, 0, Vec3.ZERO, v(-0.5, -0.5, -1));
+        assertRay(DEFAULT, camera, 1, 0, Vec3.ZERO, v(0.5, -0.5, -1));
+        assertRay(DEFAULT, camera, 0, 1, Vec3.ZERO, v(-0.5, 0.5, -1));
+        assertRay(DEFAULT, camera, 1, 1, Vec3.ZERO, v(0.5, 0.5, -1));
     }
 
     @Test
     public void rotatedCameraCenterRayIsProjDistanceAlongViewDir() {
-        assertRay(v(1, 2, 3), v(2, 0, 0), rotatedCamera().generateRay(0.5, 0.5));
+        assertRay(ROTATED, rotatedCamera(), 0.5, 0.5, v(1, 2, 3), v(2, 0, 0));
     }
 
     @Test
+    @Points(value = 2, task = StudentTask.CAMERA)
     public void rotatedCameraCornerRaysUseItsBasisAndNonSquarePlane() {
         PerspectiveCamera camera = rotatedCamera();
         // (u,v) = (0,0): s = −2, t = −1 → (2, 2, −1); the other corners flip the signs of s and t.
-        assertRay(v(1, 2, 3), v(2, 2, -1), camera.generateRay(0, 0));
-        assertRay(v(1, 2, 3), v(2, -2, -1), camera.generateRay(1, 0));
-        assertRay(v(1, 2, 3), v(2, 2, 1), camera.generateRay(0, 1));
-        assertRay(v(1, 2, 3), v(2, -2, 1), camera.generateRay(1, 1));
+        assertRay(ROTATED, camera, 0, 0, v(1, 2, 3), v(2, 2, -1));
+        assertRay(ROTATED, camera, 1, 0, v(1, 2, 3), v(2, -2, -1));
+        assertRay(ROTATED, camera, 0, 1, v(1, 2, 3), v(2, 2, 1));
+        assertRay(ROTATED, camera, 1, 1, v(1, 2, 3), v(2, -2, 1));
     }
 
     @Test
     public void rotatedCameraOffCenterPointDistinguishesUFromV() {
         // (u,v) = (0.25, 0.75): s = 4·(−0.25) = −1, t = 2·0.25 = 0.5 → (2, 1, 0.5).
-        assertRay(v(1, 2, 3), v(2, 1, 0.5), rotatedCamera().generateRay(0.25, 0.75));
+        assertRay(ROTATED, rotatedCamera(), 0.25, 0.75, v(1, 2, 3), v(2, 1, 0.5));
     }
 
     @Test
@@ -84,11 +92,12 @@ public class PerspectiveCameraTest {
         camera.setViewUp(v(0, 0, 1));
         camera.setProjDistance(2);
         camera.complete();
+        String which = "the PerspectiveCamera at the origin with viewDir (3,3,0), viewUp (0,0,1), projDistance 2";
         double a = Math.sqrt(0.5);
         // Center: −2·w = (2a, 2a, 0), of length 2 whatever the length of viewDir.
-        assertRay(Vec3.ZERO, v(2 * a, 2 * a, 0), camera.generateRay(0.5, 0.5));
+        assertRay(which, camera, 0.5, 0.5, Vec3.ZERO, v(2 * a, 2 * a, 0));
         // (1,1): s = t = ½ → ½(a,−a,0) + ½(0,0,1) + (2a,2a,0) = (2.5a, 1.5a, 0.5).
-        assertRay(Vec3.ZERO, v(2.5 * a, 1.5 * a, 0.5), camera.generateRay(1, 1));
+        assertRay(which, camera, 1, 1, Vec3.ZERO, v(2.5 * a, 1.5 * a, 0.5));
     }
 
     @Test
@@ -97,16 +106,8 @@ public class PerspectiveCameraTest {
         PerspectiveCamera camera = new PerspectiveCamera();
         camera.setViewUp(v(0, 1, 1));
         camera.complete();
-        assertRay(Vec3.ZERO, v(0.5, -0.5, -1), camera.generateRay(1, 0));
-        assertRay(Vec3.ZERO, v(-0.5, 0.5, -1), camera.generateRay(0, 1));
-    }
-
-    /** Origin and direction as given, and the whole half-line t in (0, ∞). */
-    static void assertRay(Vec3 origin, Vec3 direction, Ray ray) {
-        assertNotNull("generateRay returned null", ray);
-        assertVec("origin", origin, ray.origin, TOL);
-        assertVec("direction", direction, ray.direction, TOL);
-        assertEquals("start", 0.0, ray.start, 0);
-        assertEquals("end", Double.POSITIVE_INFINITY, ray.end, 0);
+        String which = "the PerspectiveCamera with viewUp (0,1,1) (its basis is the default one)";
+        assertRay(which, camera, 1, 0, Vec3.ZERO, v(0.5, -0.5, -1));
+        assertRay(which, camera, 0, 1, Vec3.ZERO, v(-0.5, 0.5, -1));
     }
 }

@@ -12,23 +12,34 @@ import static ray.testing.Asserts.v;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.Rule;
 import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.testing.Points;
+import ray.testing.StudentTask;
+import ray.testing.StudentTaskRule;
 
 /**
  * Checks Group.intersect, the closest-hit loop: the smallest t in (start, end) wins whatever the
- * order of the children, a tie keeps the earlier child, the caller's ray is not changed, and
- * nested groups report the primitive that was hit.
+ * order of the children, a tie keeps the earlier child, the caller's ray is not changed, a miss
+ * leaves the record alone, and nested groups report the primitive that was hit.
+ *
+ * <p>The children are {@link FixedHitSurface}s, hit at a fixed t, so these tests pass with any
+ * Sphere and Triangle, finished or not.
  */
+@Points(value = 1, task = StudentTask.GROUP)
 public class GroupTest {
-    private static final double TOL = 1e-14;
-    /** Unit spheres on the −z axis; the ray t(0,0,−1) enters them at t = 4, 9 and 14. */
-    private final Sphere near = new Sphere(v(0, 0, -5), 1);
-    private final Sphere middle = new Sphere(v(0, 0, -10), 1);
-    private final Sphere far = new Sphere(v(0, 0, -15), 1);
+    @Rule
+    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.GROUP);
 
+    /** Three children hit at t = 4, 9 and 14, each with its own normal. */
+    private final FixedHitSurface near = new FixedHitSurface("near", 4, v(0, 0, 1));
+    private final FixedHitSurface middle = new FixedHitSurface("middle", 9, v(0, 1, 0));
+    private final FixedHitSurface far = new FixedHitSurface("far", 14, v(1, 0, 0));
+
+    /** A ray along −z from the origin, segment (0, ∞). */
     private static Ray downZ() {
         return new Ray(Vec3.ZERO, v(0, 0, -1));
     }
@@ -42,27 +53,32 @@ public class GroupTest {
     }
 
     @Test
+    @Points(value = 2, task = StudentTask.GROUP)
     public void closestHitWinsInEveryOrderOfTheChildren() {
-        for (List<Sphere> order : permutations(List.of(near, middle, far))) {
+        for (List<Surface> order : permutations(List.<Surface>of(near, middle, far))) {
             Group group = groupOf(order.toArray(new Surface[0]));
             IntersectionRecord out = new IntersectionRecord();
-            assertTrue(order + " should hit", group.intersect(out, downZ()));
-            assertEquals(order.toString(), 4, out.t, TOL);
-            assertSame(order.toString(), near, out.surface);
-            assertVec(v(0, 0, -4), out.location, TOL);
-            assertVec(v(0, 0, 1), out.normal, TOL);
+            String what = "a group of " + order;
+            assertTrue(what + " must report a hit", group.intersect(out, downZ()));
+            assertSame(what + " must report the closest surface, near", near, out.surface);
+            assertEquals(what + ": t of the closest hit", 4, out.t, 0);
+            assertVec(what + ": location of the closest hit", v(0, 0, -4), out.location, 0);
+            assertVec(what + ": normal of the closest hit", v(0, 0, 1), out.normal, 0);
         }
     }
 
     @Test
+    @Points(value = 2, task = StudentTask.GROUP)
     public void equalTieKeepsTheEarlierChild() {
-        Sphere first = new Sphere(v(0, 0, -5), 1);
-        Sphere second = new Sphere(v(0, 0, -5), 1);
+        FixedHitSurface first = new FixedHitSurface("first", 5, v(0, 0, 1));
+        FixedHitSurface second = new FixedHitSurface("second", 5, v(0, 1, 0));
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue(groupOf(first, second).intersect(out, downZ()));
-        assertSame(first, out.surface);
-        assertTrue(groupOf(second, first).intersect(out, downZ()));
-        assertSame(second, out.surface);
+        assertTrue("a group of two surfaces hit at t = 5 must report a hit", groupOf(first, second).intersect(out, downZ()));
+        assertSame("two surfaces hit at the same t: the one added first must be reported", first, out.surface);
+        assertVec("the normal must be the first surface's", v(0, 0, 1), out.normal, 0);
+        assertTrue("a group of two surfaces hit at t = 5 must report a hit", groupOf(second, first).intersect(out, downZ()));
+        assertSame("two surfaces hit at the same t: the one added first must be reported", second, out.surface);
+        assertVec("the normal must be the first surface's", v(0, 1, 0), out.normal, 0);
     }
 
     @Test
@@ -70,11 +86,12 @@ public class GroupTest {
         Group group = new Group();
         IntersectionRecord out = sentinel(null);
         IntersectionRecord before = copyOf(out);
-        assertFalse(group.intersect(out, downZ()));
+        assertFalse("an empty group must report a miss", group.intersect(out, downZ()));
         assertUntouched(before, out);
         group.addSurface(middle);
-        assertTrue(group.intersect(out, downZ()));
-        assertEquals(9, out.t, TOL);
+        assertTrue("a group holding a surface hit at t = 9 must report a hit", group.intersect(out, downZ()));
+        assertEquals("t of the hit", 9, out.t, 0);
+        assertSame(middle, out.surface);
     }
 
     @Test
@@ -82,74 +99,73 @@ public class GroupTest {
         Group group = groupOf(near, middle, far);
         IntersectionRecord out = sentinel(null);
         IntersectionRecord before = copyOf(out);
-        assertFalse(group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, 1))));
-        assertFalse(group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 0, 3.5)));
+        // The children are hit at 4, 9 and 14: none lies in (0, 3.5) or in (15, ∞).
+        assertFalse("no child is hit for t in (0, 3.5): the group must miss",
+                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 0, 3.5)));
+        assertFalse("no child is hit for t in (15, ∞): the group must miss",
+                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 15, Double.POSITIVE_INFINITY)));
         assertUntouched(before, out);
-        assertTrue(group.intersect(out, downZ()));
+        assertTrue("children hit at t = 4, 9, 14 and a ray with segment (0, ∞): the group must hit",
+                group.intersect(out, downZ()));
+        assertEquals("t of the closest hit", 4, out.t, 0);
     }
 
     @Test
     public void hitsOutsideTheRaySegmentAreIgnored() {
         Group group = groupOf(far, near, middle);
         IntersectionRecord out = new IntersectionRecord();
-        // Past both roots of near (4 and 6): middle's entry at 9.
-        assertTrue(group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 6.5, Double.POSITIVE_INFINITY)));
-        assertEquals(9, out.t, TOL);
-        assertSame(middle, out.surface);
-        // Between near's roots: its exit at 6, before middle's entry at 9.
-        assertTrue(group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 4.5, 8.5)));
-        assertEquals(6, out.t, TOL);
-        assertSame(near, out.surface);
-        assertVec(v(0, 0, -1), out.normal, TOL);
-        // Inside middle, the segment ends before its exit at 11: nothing.
-        assertFalse(group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 9.5, 10.5)));
-        assertEquals(6, out.t, TOL);
+        assertTrue("children hit at t = 4, 9, 14 and a ray with segment (6.5, ∞): the group must hit",
+                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 6.5, Double.POSITIVE_INFINITY)));
+        assertSame("for t in (6.5, ∞) the closest hit is middle's", middle, out.surface);
+        assertEquals("t for the segment (6.5, ∞)", 9, out.t, 0);
+        assertTrue("children hit at t = 4, 9, 14 and a ray with segment (4, 14): the group must hit",
+                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 4, 14)));
+        assertSame("the segment (4, 14) excludes both of its ends, so only middle (t = 9) is inside", middle, out.surface);
+        // (9, 14) holds none of them: both ends are excluded.
+        assertFalse("children hit at t = 4, 9, 14 and a ray with segment (9, 14): the group must miss",
+                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 9, 14)));
+        assertSame("a miss must leave the record alone", middle, out.surface);
     }
 
     @Test
-    public void callersRayIsNotShortened() {
+    public void callersRayIsNotChanged() {
         Ray ray = new Ray(Vec3.ZERO, v(0, 0, -1), 0.5, 100);
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue(groupOf(far, middle, near).intersect(out, ray));
-        assertEquals(4, out.t, TOL);
-        assertEquals(0.5, ray.start, 0);
-        assertEquals(100, ray.end, 0);
+        assertTrue("children hit at t = 4, 9, 14 and a ray with segment (0.5, 100): the group must hit",
+                groupOf(far, middle, near).intersect(out, ray));
+        assertEquals("t of the closest hit", 4, out.t, 0);
+        assertEquals("the caller's ray.start must not change: shorten a copy of the ray", 0.5, ray.start, 0);
+        assertEquals("the caller's ray.end must not change: shorten a copy of the ray", 100, ray.end, 0);
+        assertVec("the caller's ray.origin must not change", Vec3.ZERO, ray.origin, 0);
+        assertVec("the caller's ray.direction must not change", v(0, 0, -1), ray.direction, 0);
     }
 
     @Test
+    @Points(value = 2, task = StudentTask.GROUP)
     public void nestedGroupsReportTheClosestPrimitive() {
-        Group inner = groupOf(far, near);
-        Group outer = groupOf(middle, inner);
+        Group outer = groupOf(middle, groupOf(far, near));
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue(outer.intersect(out, downZ()));
-        assertEquals(4, out.t, TOL);
-        assertSame(near, out.surface);
-        // The closest hit may also come before the nested group.
+        assertTrue("a group holding a group must report the hits inside it", outer.intersect(out, downZ()));
+        assertSame("the closest hit, near (t = 4), is inside the inner group", near, out.surface);
+        assertEquals("t of the closest hit", 4, out.t, 0);
+        // The closest hit may also come before the nested group, whose hits are all farther.
         Group other = groupOf(near, groupOf(far, middle));
-        assertTrue(other.intersect(out, downZ()));
-        assertSame(near, out.surface);
-        assertEquals(4, out.t, TOL);
+        assertTrue("a group holding a group must report a hit", other.intersect(out, downZ()));
+        assertSame("the closest hit, near (t = 4), comes before the inner group", near, out.surface);
+        assertEquals("t of the closest hit", 4, out.t, 0);
     }
 
     @Test
-    public void closestHitAmongMixedPrimitives() {
-        // A triangle across the axis at z = −3 (t = 3) is in front of every sphere.
-        Triangle wall = new Triangle(v(-1, -1, -3), v(1, -1, -3), v(-1, 1, -3));
+    public void recordHoldsEverythingTheClosestChildReported() {
+        FixedHitSurface triangleLike = new FixedHitSurface("with barycentrics", 3, v(0.6, 0, 0.8), 0.25, 0.5);
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue(groupOf(near, wall, far).intersect(out, downZ()));
-        assertEquals(3, out.t, TOL);
-        assertSame(wall, out.surface);
-        // (0,0) = (−1,−1) + β(2,0) + γ(0,2): β = γ = ½.
-        assertEquals(0.5, out.beta, TOL);
-        assertEquals(0.5, out.gamma, TOL);
-    }
-
-    @Test
-    public void groupWithoutTransformIsItsOwnCompletedSurface() {
-        Group group = new Group();
-        group.addSurface(near);
-        assertSame(group, group.complete());
-        assertEquals(List.of(near), group.children());
+        assertTrue("children hit at t = 4, 3, 14: the group must hit", groupOf(near, triangleLike, far).intersect(out, downZ()));
+        assertSame("the closest child, hit at t = 3", triangleLike, out.surface);
+        assertEquals("t of the closest hit", 3, out.t, 0);
+        assertVec("location of the closest hit", v(0, 0, -3), out.location, 0);
+        assertVec("normal of the closest hit", v(0.6, 0, 0.8), out.normal, 0);
+        assertEquals("beta of the closest hit", 0.25, out.beta, 0);
+        assertEquals("gamma of the closest hit", 0.5, out.gamma, 0);
     }
 
     private static <T> List<List<T>> permutations(List<T> items) {

@@ -6,16 +6,24 @@ import static org.junit.Assert.assertTrue;
 import static ray.testing.Asserts.assertVec;
 
 import java.util.Random;
+import org.junit.Rule;
 import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.testing.Points;
+import ray.testing.StudentTask;
+import ray.testing.StudentTaskRule;
 
 /**
  * Property test of Triangle.intersect on seeded random triangles and rays aimed at random interior
  * points: every ray hits, the barycentrics reproduce the location, and the location lies on the ray.
  */
+@Points(value = 2, task = StudentTask.TRIANGLE)
 public class TriangleRandomTest {
+    @Rule
+    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TRIANGLE);
+
     @Test
     public void barycentricsReproduceTheLocation() {
         Random random = new Random(31337);
@@ -38,16 +46,19 @@ public class TriangleRandomTest {
             }
 
             IntersectionRecord out = new IntersectionRecord();
-            String what = "ray " + i + ": " + ray + " at " + triangle;
-            assertTrue(what + " should hit", triangle.intersect(out, ray));
-            assertSame(triangle, out.surface);
+            String what = "random ray " + i + ", " + ray + ", aimed at " + triangle + " with beta = " + beta
+                    + ", gamma = " + gamma;
+            assertTrue(what + ": must hit", triangle.intersect(out, ray));
+            assertSame(what + ": out.surface must be the triangle", triangle, out.surface);
             Vec3 fromBarycentrics = v0.times(1 - out.beta - out.gamma).plus(v1.times(out.beta)).plus(v2.times(out.gamma));
-            assertVec(what, fromBarycentrics, out.location, 1e-10);
-            assertVec(what, ray.pointAt(out.t), out.location, 1e-10);
+            assertVec(what + ": (1 − beta − gamma)·v0 + beta·v1 + gamma·v2 must be the location", fromBarycentrics,
+                    out.location, 1e-10);
+            assertVec(what + ": the location must be ray.pointAt(t)", ray.pointAt(out.t), out.location, 1e-10);
             // The ray was aimed at target with direction (target − origin)·scale, so t = 1/scale.
-            assertEquals(what, 1 / scale, out.t, 1e-9);
-            assertVec(what, target, out.location, 1e-9);
-            assertVec(what, triangle.getFaceNormal(), out.normal, 0);
+            assertEquals(what + ": t", 1 / scale, out.t, 1e-9);
+            assertVec(what + ": location", target, out.location, 1e-9);
+            assertVec(what + ": the normal of a triangle without vertex normals is its face normal",
+                    triangle.getFaceNormal(), out.normal, 1e-14);
         }
     }
 

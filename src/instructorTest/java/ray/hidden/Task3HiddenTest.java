@@ -1,0 +1,116 @@
+package ray.hidden;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertSame;
+import static org.junit.Assert.assertTrue;
+import static ray.surface.Records.assertUntouched;
+import static ray.surface.Records.copyOf;
+import static ray.surface.Records.sentinel;
+import static ray.testing.Asserts.assertVec;
+import static ray.testing.Asserts.v;
+
+import org.junit.Rule;
+import org.junit.Test;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+import ray.surface.Sphere;
+import ray.surface.Triangle;
+import ray.testing.Points;
+import ray.testing.StudentTask;
+import ray.testing.StudentTaskRule;
+import ray.testing.Visibility;
+
+/**
+ * Hidden triangle cases: vertices hit exactly from behind, a tilted triangle along a very long
+ * direction, a ray starting on the triangle (as shadow rays do), a record that already holds a
+ * closer t, and a small triangle far from the origin.
+ */
+@Points(value = 1, task = StudentTask.TRIANGLE, visibility = Visibility.HIDDEN)
+public class Task3HiddenTest {
+    @Rule
+    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TRIANGLE);
+
+    /** (0,0,2), (4,0,2), (0,2,2) in the plane z = 2, normal +z: a point is (4β, 2γ, 2). */
+    private final Triangle flat = new Triangle(v(0, 0, 2), v(4, 0, 2), v(0, 2, 2));
+    private static final String FLAT = "the triangle (0,0,2), (4,0,2), (0,2,2)";
+
+    @Test
+    public void verticesHitExactlyFromBehind() {
+        // From z = −1 toward +z, each vertex is 3 away; the normal stays +z (never flipped toward the ray).
+        double[][] vertexBetaGamma = {{0, 0, 0, 0}, {4, 0, 1, 0}, {0, 2, 0, 1}};
+        for (double[] c : vertexBetaGamma) {
+            IntersectionRecord out = new IntersectionRecord();
+            String ray = "the ray from (" + c[0] + ", " + c[1] + ", −1) toward +z";
+            assertTrue(ray + " must hit " + FLAT + " from behind, exactly at a vertex",
+                    flat.intersect(out, new Ray(v(c[0], c[1], -1), v(0, 0, 1))));
+            assertEquals(ray + ": t", 3, out.t, 0);
+            assertEquals(ray + ": beta", c[2], out.beta, 0);
+            assertEquals(ray + ": gamma", c[3], out.gamma, 0);
+            assertVec(ray + ": location", v(c[0], c[1], 2), out.location, 0);
+            assertVec(ray + ": normal (geometric, not flipped)", v(0, 0, 1), out.normal, 0);
+        }
+    }
+
+    @Test
+    public void tiltedTriangleAlongAVeryLongDirection() {
+        // Plane x + y/2 + z/3 = 1 through (1,0,0), (0,2,0), (0,0,3). Along t·(1000,1000,1000):
+        // 1000t·(1 + 1/2 + 1/3) = 1 → t = 6/11000, at (6/11, 6/11, 6/11) = (1 − β − γ)(1,0,0) + β(0,2,0) + γ(0,0,3),
+        // so β = 3/11, γ = 2/11. Normal: (−1,2,0) × (−1,0,3) = (6,3,2), of length 7.
+        Triangle tilted = new Triangle(v(1, 0, 0), v(0, 2, 0), v(0, 0, 3));
+        IntersectionRecord out = new IntersectionRecord();
+        String ray = "the ray t·(1000,1000,1000) from the origin";
+        assertTrue(ray + " must hit the triangle (1,0,0), (0,2,0), (0,0,3) (at t = 6/11000)",
+                tilted.intersect(out, new Ray(Vec3.ZERO, v(1000, 1000, 1000))));
+        assertEquals(ray + ": t", 6.0 / 11000, out.t, 1e-17);
+        assertVec(ray + ": location", v(6.0 / 11, 6.0 / 11, 6.0 / 11), out.location, 1e-14);
+        assertEquals(ray + ": beta", 3.0 / 11, out.beta, 1e-14);
+        assertEquals(ray + ": gamma", 2.0 / 11, out.gamma, 1e-14);
+        assertVec(ray + ": normal", v(6.0 / 7, 3.0 / 7, 2.0 / 7), out.normal, 1e-14);
+    }
+
+    @Test
+    public void rayStartingOnTheTriangleDoesNotHitItAtTZero() {
+        IntersectionRecord out = sentinel(null);
+        IntersectionRecord before = copyOf(out);
+        assertFalse("the ray from (1,0.5,2), on " + FLAT + ", toward +z: its hit t = 0 is not in (0, ∞)",
+                flat.intersect(out, new Ray(v(1, 0.5, 2), v(0, 0, 1))));
+        assertFalse("the ray from (1,0.5,2), on " + FLAT + ", toward −z: its hit t = 0 is not in (0, ∞)",
+                flat.intersect(out, new Ray(v(1, 0.5, 2), v(0, 0, -1))));
+        assertUntouched(before, out);
+        assertTrue("the ray from (1,0.5,3) toward −z must hit " + FLAT + " (at t = 1)",
+                flat.intersect(out, new Ray(v(1, 0.5, 3), v(0, 0, -1))));
+        assertEquals("t", 1, out.t, 0);
+    }
+
+    @Test
+    public void hitReplacesARecordThatHoldsACloserT() {
+        Sphere other = new Sphere();
+        IntersectionRecord out = sentinel(other);
+        out.t = 1;
+        assertTrue("the ray from (1,0.5,5) toward −z must hit " + FLAT + " although out.t was 1",
+                flat.intersect(out, new Ray(v(1, 0.5, 5), v(0, 0, -1))));
+        assertEquals("a hit must replace out.t, whatever it held: only ray.start and ray.end limit t", 3, out.t, 0);
+        assertSame("a hit must set out.surface", flat, out.surface);
+        assertEquals("a hit must set out.beta", 0.25, out.beta, 1e-15);
+        assertEquals("a hit must set out.gamma", 0.25, out.gamma, 1e-15);
+    }
+
+    @Test
+    public void smallTriangleFarFromTheOrigin() {
+        // Legs of 0.01 from v0 = (100, 200, 300); the ray 5 above v0 + (0.0025, 0.005) hits at β = 0.25, γ = 0.5.
+        Vec3 v0 = v(100, 200, 300);
+        Triangle small = new Triangle(v0, v0.plus(v(0.01, 0, 0)), v0.plus(v(0, 0.01, 0)));
+        IntersectionRecord out = new IntersectionRecord();
+        String ray = "the ray toward −z over the point (100.0025, 200.005, 300)";
+        assertTrue(ray + " must hit the triangle with legs 0.01 at (100,200,300)",
+                small.intersect(out, new Ray(v0.plus(v(0.0025, 0.005, 5)), v(0, 0, -1))));
+        assertEquals(ray + ": t", 5, out.t, 1e-9);
+        assertEquals(ray + ": beta", 0.25, out.beta, 1e-9);
+        assertEquals(ray + ": gamma", 0.5, out.gamma, 1e-9);
+        assertVec(ray + ": normal", v(0, 0, 1), out.normal, 1e-12);
+        assertFalse("the ray toward −z over (100.011, 200.005, 300) passes beside the small triangle",
+                small.intersect(new IntersectionRecord(), new Ray(v0.plus(v(0.011, 0.005, 5)), v(0, 0, -1))));
+    }
+}

@@ -1,0 +1,139 @@
+package ray.tools;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+
+import java.io.File;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import org.junit.BeforeClass;
+import org.junit.ClassRule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import ray.grading.CompileResult;
+import ray.grading.ProjectCompiler;
+import ray.grading.SolutionMarkers;
+import ray.grading.StudentFiles;
+import ray.grading.TestOutcome;
+import ray.grading.TestProcess;
+
+/**
+ * The handout, built and used as a student would: nothing of the solution leaks, nothing
+ * instructor-only ships, it compiles on its own, exactly the graded (student) tests fail on the
+ * stubs, and with the solution files put back every test passes.
+ */
+public class HandoutTest {
+    @ClassRule
+    public static final TemporaryFolder FOLDER = new TemporaryFolder();
+
+    private static final Path PROJECT = Path.of(".");
+    private static Path handout;
+    private static List<String> files;
+    /** The libraries only: the handout must compile without any instructor class on the classpath. */
+    private static final String LIBRARIES = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
+            .filter(p -> p.endsWith(".jar")).collect(Collectors.joining(File.pathSeparator));
+
+    @BeforeClass
+    public static void buildHandout() throws Exception {
+        handout = FOLDER.getRoot().toPath().resolve("ray1");
+        files = Handout.build(PROJECT, handout);
+    }
+
+    @Test
+    public void shipsTheProjectButNothingInstructorOnly() {
+        for (String required : List.of("build.gradle", "settings.gradle", "gradle/legacy-run.gradle", "README.md",
+                "src/main/java/ray/surface/Sphere.java", "src/test/java/ray/testing/StudentTaskRule.java",
+                "docs/scene-format.md", "scenes/one-sphere.xml", "scenes/reference/one-sphere.png")) {
+            assertTrue("the handout lacks " + required, files.contains(required));
+        }
+        for (String file : files) {
+            assertFalse(file, file.startsWith("src/instructorTest/") || file.startsWith("src/main/java/ray/grading/")
+                    || file.startsWith("src/main/java/ray/tools/") || file.startsWith(".ci/") || file.equals("docs/instructor.md"));
+        }
+    }
+
+    /** Every line of a solution block that appears nowhere else in the shipped sources must be absent from the handout. */
+    @Test
+    public void noLineOfAnySolutionLeaks() throws Exception {
+        Set<String> solutionLines = new HashSet<>();
+        Set<String> otherLines = new HashSet<>();
+        for (String file : files) {
+            if (!file.endsWith(".java")) {
+                continue;
+            }
+            boolean inSolution = false;
+            for (String line : Files.readAllLines(PROJECT.resolve(file), StandardCharsets.UTF_8)) {
+                String t = line.strip();
+                if (t.equals(SolutionMarkers.BEGIN) || t.equals(SolutionMarkers.END)) {
+                    inSolution = t.equals(SolutionMarkers.BEGIN);
+                } else if (!t.isEmpty()) {
+                    (inSolution ? solutionLines : otherLines).add(t);
+                }
+            }
+        }
+        solutionLines.removeAll(otherLines);
+        assertTrue("too few solution lines found to make this check mean anything", solutionLines.size() > 40);
+        for (String file : files) {
+            if (file.endsWith(".java") || file.endsWith(".md") || file.endsWith(".gradle") || file.endsWith(".xml")) {
+                for (String line : Files.readAllLines(handout.resolve(file), StandardCharsets.UTF_8)) {
+                    assertFalse(file + " leaks a solution line: " + line.strip(), solutionLines.contains(line.strip()));
+                }
+            }
+        }
+    }
+
+    @Test(timeout = 300_000)
+    public void onTheStubsExactlyTheStudentTestsFailAndWithTheSolutionAllPass() throws Exception {
+        List<TestOutcome> onStubs = compileAndRunEverything(handout, "stubs");
+        List<TestOutcome> graded = onStubs.stream().filter(t -> t.task() > 0).collect(Collectors.toList());
+        List<TestOutcome> ungraded = onStubs.stream().filter(t -> t.task() == 0).collect(Collectors.toList());
+        assertTrue("the handout has no graded tests", graded.size() > 40);
+        assertTrue("the handout has no framework tests", ungraded.size() > 40);
+        for (TestOutcome t : graded) {
+            assertFalse(t.id() + " passes on the stubs: a student would get its points for nothing", t.passed());
+            assertTrue(t.id() + "'s failure does not say what to do: " + t.message(), t.message().contains("TODO(Task " + t.task() + ")"));
+        }
+        for (TestOutcome t : ungraded) {
+            assertTrue(t.id() + " fails in the untouched handout: " + t.message(), t.passed());
+        }
+        for (int task = 1; task <= 4; task++) {
+            int n = task;
+            assertTrue("no graded test for task " + task, graded.stream().anyMatch(t -> t.task() == n));
+        }
+
+        Path solved = FOLDER.getRoot().toPath().resolve("solved");
+        Handout.build(PROJECT, solved);
+        for (String studentFile : StudentFiles.in(PROJECT).keySet()) {
+            Files.copy(PROJECT.resolve(studentFile), solved.resolve(studentFile), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        }
+        List<TestOutcome> withSolution = compileAndRunEverything(solved, "solved");
+        assertEquals(onStubs.size(), withSolution.size());
+        for (TestOutcome t : withSolution) {
+            assertTrue(t.id() + " fails with the solution in place: " + t.message(), t.passed());
+        }
+    }
+
+    private static List<TestOutcome> compileAndRunEverything(Path tree, String name) throws Exception {
+        CompileResult compiled = ProjectCompiler.compile(tree, tree.resolve("classes"), LIBRARIES);
+        assertTrue("the " + name + " handout does not compile on its own:\n" + compiled.messages(), compiled.ok());
+        return new TestProcess(tree, tree.resolve("classes"), LIBRARIES, tree.resolve("test-run")).withUngradedTests().run(null);
+    }
+
+    @Test
+    public void theStudentFilesOfTheHandoutAreTheStubs() throws Exception {
+        for (Map.Entry<String, Integer> f : StudentFiles.in(PROJECT).entrySet()) {
+            String shipped = Files.readString(handout.resolve(f.getKey()), StandardCharsets.UTF_8);
+            String expected = SolutionMarkers.studentVersion(Files.readString(PROJECT.resolve(f.getKey()), StandardCharsets.UTF_8), f.getKey());
+            assertEquals(f.getKey(), expected, shipped);
+            assertTrue(f.getKey(), shipped.contains("// TODO(Task " + f.getValue() + ")"));
+        }
+    }
+}

@@ -1,0 +1,117 @@
+package ray.tools;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import ray.cli.RenderCommand;
+import ray.image.PngWriter;
+import ray.render.RenderResult;
+import ray.render.Renderer;
+import ray.scene.Scene;
+import ray.scene.SceneException;
+import ray.scene.SceneLoader;
+
+/**
+ * Renders the reference images: every scene under scenes/ (recursively, except scenes/reference
+ * itself) at its full size with the solution code, into {@code scenes/reference/<scene>.png}.
+ * The graded render tests compare students' renders with these by {@link ray.image.ImageDiff}.
+ *
+ * <p>Also writes the folder's README.md and the marker file {@link RenderCommand#REFERENCE_MARKER}
+ * (so {@code ray1 render} refuses to write there), and deletes PNGs of scenes that no longer exist.
+ *
+ * <p>Run by {@code gradle references}; usage {@code References [SCENES-FOLDER]} (default scenes).
+ */
+public final class References {
+    static final String README = "# Reference renders\n"
+            + "\n"
+            + "These images are made by `gradle references` (`ray.tools.References`), which renders every\n"
+            + "scene under `scenes/` at full size with the instructor's solution. Do not edit them by hand:\n"
+            + "change a scene, then run `gradle references` again and look at the images before committing.\n"
+            + "\n"
+            + "The render tests (`src/test/java/ray/endtoend`) compare your renders with these images;\n"
+            + "`docs/grading.md` explains how, and `ray1 diff` compares two images yourself.\n"
+            + "`ray1 render` refuses to write into this folder (it holds the marker file `"
+            + RenderCommand.REFERENCE_MARKER + "`).\n";
+
+    private References() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        Path scenes = Path.of(args.length > 0 ? args[0] : "scenes");
+        System.exit(run(scenes));
+    }
+
+    /** Renders every scene under {@code scenes} into scenes/reference; returns the exit status. */
+    static int run(Path scenes) throws IOException {
+        Path reference = scenes.resolve("reference");
+        Map<String, Path> byName = new TreeMap<>();
+        int failures = 0;
+        for (Path file : sceneFiles(scenes)) {
+            Path previous = byName.putIfAbsent(nameOf(file), file);
+            if (previous != null) {
+                System.err.println("error: " + file + " and " + previous + " would both render to "
+                        + reference.resolve(nameOf(file) + ".png") + "; rename one");
+                failures++;
+            }
+        }
+        if (failures > 0) {
+            return 1;
+        }
+        Files.createDirectories(reference);
+        Files.writeString(reference.resolve(RenderCommand.REFERENCE_MARKER),
+                "Reference renders, made by gradle references. ray1 render does not write into this folder.\n",
+                StandardCharsets.UTF_8);
+        Files.writeString(reference.resolve("README.md"), README, StandardCharsets.UTF_8);
+        for (Map.Entry<String, Path> entry : byName.entrySet()) {
+            try {
+                Scene scene = SceneLoader.load(entry.getValue());
+                RenderResult result = new Renderer(scene, 0, 0).render();
+                Path png = reference.resolve(entry.getKey() + ".png");
+                PngWriter.write(result.image, scene.getExposure(), png);
+                System.out.printf("%-24s %4dx%-4d %6.2f s  %s%n", entry.getKey(), scene.getWidth(), scene.getHeight(),
+                        result.seconds, png);
+            } catch (SceneException e) {
+                System.err.println("error: " + e.getMessage());
+                failures++;
+            }
+        }
+        // A reference whose scene is gone would otherwise linger and confuse whoever reads the folder.
+        try (Stream<Path> pngs = Files.list(reference)) {
+            for (Path png : pngs.filter(p -> p.toString().endsWith(".png")).collect(Collectors.toList())) {
+                String name = png.getFileName().toString();
+                if (!byName.containsKey(name.substring(0, name.length() - ".png".length()))) {
+                    Files.delete(png);
+                    System.out.println("deleted " + png + " (no such scene)");
+                }
+            }
+        }
+        if (failures > 0) {
+            System.err.println(failures + " scenes failed");
+        }
+        return failures == 0 ? 0 : 1;
+    }
+
+    /** Every *.xml under {@code scenes}, sorted, except those under scenes/reference. */
+    static List<Path> sceneFiles(Path scenes) {
+        Path reference = scenes.resolve("reference");
+        try (Stream<Path> walk = Files.walk(scenes)) {
+            return walk.filter(p -> p.toString().endsWith(".xml") && Files.isRegularFile(p) && !p.startsWith(reference))
+                    .sorted().collect(Collectors.toCollection(ArrayList::new));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    static String nameOf(Path scene) {
+        String fileName = scene.getFileName().toString();
+        return fileName.substring(0, fileName.length() - ".xml".length());
+    }
+}

@@ -1,0 +1,28 @@
+package ray.trace;
+
+import ray.math.Vec3;
+import ray.shading.Lambertian;
+import ray.shading.Phong;
+import ray.shading.Shader;
+
+/**
+ * The properties of the built-in shaders that the trace prints (kd, ks, the exponent); null for
+ * a shader that has no such property, whose result the trace then prints alone.
+ */
+final class ShaderParameters {
+    private ShaderParameters() {
+    }
+
+    static Vec3 diffuseColor(Shader shader) {
+        return shader instanceof Lambertian ? ((Lambertian) shader).getDiffuseColor()
+                : shader instanceof Phong ? ((Phong) shader).getDiffuseColor() : null;
+    }
+
+    static Vec3 specularColor(Shader shader) {
+        return shader instanceof Phong ? ((Phong) shader).getSpecularColor() : null;
+    }
+
+    static Double exponent(Shader shader) {
+        return shader instanceof Phong ? ((Phong) shader).getExponent() : null;
+    }
+}

@@ -1,0 +1,39 @@
+package ray.camera;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertNotNull;
+import static ray.testing.Asserts.assertVec;
+
+import ray.Ray;
+import ray.math.Vec3;
+
+/** The check every camera test makes: the ray for one image point, compared with the one worked out by hand. */
+public final class CameraRays {
+    /** Rays are compared to this tolerance in each coordinate: a correct camera is off by rounding only. */
+    public static final double TOL = 1e-14;
+
+    private CameraRays() {
+    }
+
+    /**
+     * The ray {@code camera.generateRay(u, v)} has exactly this origin and direction (the direction's
+     * length included) and the whole half-line t in (0, ∞).
+     *
+     * @param which names the camera in failure messages, e.g. "the default PerspectiveCamera"
+     */
+    public static void assertRay(String which, Camera camera, double u, double v, Vec3 origin, Vec3 direction) {
+        assertRay(which, camera, u, v, origin, direction, TOL);
+    }
+
+    public static void assertRay(String which, Camera camera, double u, double v, Vec3 origin, Vec3 direction,
+            double tolerance) {
+        Ray ray = camera.generateRay(u, v);
+        String what = which + ", image point (" + u + ", " + v + ")";
+        assertNotNull(what + ": generateRay returned null", ray);
+        assertVec(what + ": ray origin", origin, ray.origin, tolerance);
+        assertVec(what + ": ray direction", direction, ray.direction, tolerance);
+        String segment = what + ": the ray must cover t in (0, ∞); new Ray(origin, direction) does";
+        assertEquals(segment + " (ray.start)", 0.0, ray.start, 0);
+        assertEquals(segment + " (ray.end)", Double.POSITIVE_INFINITY, ray.end, 0);
+    }
+}

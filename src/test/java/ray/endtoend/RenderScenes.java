@@ -1,0 +1,104 @@
+package ray.endtoend;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import ray.image.PngWriter;
+import ray.render.Renderer;
+import ray.scene.Scene;
+import ray.scene.SceneLoader;
+import ray.testing.StudentTask;
+
+/**
+ * The shipped scenes (every *.xml under scenes/, except the reference folder), the task each one's
+ * graded render test counts toward, and full-size renders of them.
+ */
+final class RenderScenes {
+    static final Path FOLDER = Path.of("scenes");
+    /** The reference renders, made by the instructor's solution ({@code gradle references}). */
+    static final Path REFERENCE = FOLDER.resolve("reference");
+
+    /**
+     * The task whose code each scene exercises most. Every scene under scenes/ must be listed here
+     * exactly once ({@link SceneTasksTest} fails otherwise), so a new scene cannot go ungraded.
+     */
+    static final Map<String, StudentTask> TASKS;
+
+    static {
+        Map<String, StudentTask> tasks = new LinkedHashMap<>();
+        // Task 1: an orthographic view, and 16 samples per pixel at arbitrary image points.
+        tasks.put("wire-box-ortho", StudentTask.CAMERA);
+        tasks.put("antialiased", StudentTask.CAMERA);
+        // Task 2: spheres alone.
+        tasks.put("one-sphere", StudentTask.SPHERE);
+        tasks.put("one-sphere-phong", StudentTask.SPHERE);
+        // Task 3: meshes and boxes (boxes are 12 triangles each), flat and interpolated normals.
+        tasks.put("mesh-flat", StudentTask.TRIANGLE);
+        tasks.put("mesh-smooth", StudentTask.TRIANGLE);
+        tasks.put("two-boxes", StudentTask.TRIANGLE);
+        tasks.put("rgb-normals", StudentTask.TRIANGLE);
+        // Task 4: overlapping surfaces, nested transformed groups, reflection rays.
+        tasks.put("wire-box", StudentTask.GROUP);
+        tasks.put("group-transforms", StudentTask.GROUP);
+        tasks.put("glazed-sphere", StudentTask.GROUP);
+        TASKS = Collections.unmodifiableMap(tasks);
+    }
+
+    private RenderScenes() {
+    }
+
+    /** Every scene file under scenes/, sorted, except any under scenes/reference. */
+    static List<Path> sceneFiles() {
+        try (Stream<Path> walk = Files.walk(FOLDER)) {
+            return walk.filter(p -> p.toString().endsWith(".xml") && Files.isRegularFile(p) && !p.startsWith(REFERENCE))
+                    .sorted().collect(Collectors.toCollection(ArrayList::new));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    static String nameOf(Path scene) {
+        String f = scene.getFileName().toString();
+        return f.substring(0, f.length() - ".xml".length());
+    }
+
+    /** The scene file called {@code name}.xml anywhere under scenes/, or scenes/NAME.xml when there is none (to be reported missing). */
+    static Path fileOf(String name) {
+        for (Path p : sceneFiles()) {
+            if (nameOf(p).equals(name)) {
+                return p;
+            }
+        }
+        return FOLDER.resolve(name + ".xml");
+    }
+
+    static Path referenceOf(String name) {
+        return REFERENCE.resolve(name + ".png");
+    }
+
+    /** The parameters of a task's render test: the names of its scenes, as one-element arrays. */
+    static List<Object[]> scenesOf(StudentTask task) {
+        List<Object[]> list = new ArrayList<>();
+        TASKS.forEach((name, t) -> {
+            if (t == task) {
+                list.add(new Object[] {name});
+            }
+        });
+        return list;
+    }
+
+    /** The scene rendered by the current code at its full size, as 8-bit pixels (PNG row order). */
+    static BufferedImage render(Path file) {
+        Scene scene = SceneLoader.load(file);
+        return PngWriter.toBufferedImage(new Renderer(scene, 0, 0).render().image, scene.getExposure());
+    }
+}

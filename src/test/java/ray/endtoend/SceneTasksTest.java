@@ -1,0 +1,55 @@
+package ray.endtoend;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.Test;
+
+/**
+ * Every shipped scene is graded exactly once: each scene under scenes/ has a task in
+ * {@link RenderScenes#TASKS} (so a new scene cannot be forgotten), every listed scene exists and
+ * has a reference image, and no two scenes share a name (they would share a reference image).
+ */
+public class SceneTasksTest {
+    @Test
+    public void everySceneUnderScenesHasATask() {
+        List<String> unassigned = new ArrayList<>();
+        List<Path> scenes = RenderScenes.sceneFiles();
+        assertTrue("no scenes found under " + RenderScenes.FOLDER.toAbsolutePath(), !scenes.isEmpty());
+        for (Path file : scenes) {
+            if (!RenderScenes.TASKS.containsKey(RenderScenes.nameOf(file))) {
+                unassigned.add(file.toString());
+            }
+        }
+        assertTrue("scenes without a task; add each to RenderScenes.TASKS (and run gradle references): " + unassigned,
+                unassigned.isEmpty());
+    }
+
+    @Test
+    public void everyAssignedSceneExistsAndHasAReference() {
+        List<String> problems = new ArrayList<>();
+        for (String name : RenderScenes.TASKS.keySet()) {
+            if (!Files.isRegularFile(RenderScenes.fileOf(name))) {
+                problems.add("no scene file " + name + ".xml under " + RenderScenes.FOLDER);
+            } else if (!Files.isRegularFile(RenderScenes.referenceOf(name))) {
+                problems.add("no reference " + RenderScenes.referenceOf(name) + " (run gradle references)");
+            }
+        }
+        assertTrue(String.join("; ", problems), problems.isEmpty());
+    }
+
+    @Test
+    public void noTwoScenesShareAName() {
+        Map<String, Path> seen = new HashMap<>();
+        for (Path file : RenderScenes.sceneFiles()) {
+            Path previous = seen.putIfAbsent(RenderScenes.nameOf(file), file);
+            assertEquals("two scenes named " + RenderScenes.nameOf(file) + " would share one reference image", null, previous);
+        }
+    }
+}
