@@ -1,0 +1,116 @@
+package ray.grading;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import com.google.gson.Gson;
+import java.io.File;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipOutputStream;
+import org.junit.ClassRule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import picocli.CommandLine;
+
+/**
+ * The autograder on real submissions of the real assignment: a broken task costs exactly that
+ * task's points (here a stubbed sphere and a group that calls System.exit), files that do not
+ * belong are listed and ignored, and a submission that does not compile scores 0 with the
+ * compiler's message.
+ */
+public class GraderTest {
+    @ClassRule
+    public static final TemporaryFolder FOLDER = new TemporaryFolder();
+
+    private static final Path PROJECT = Path.of(".");
+    private static final String LIBRARIES = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
+            .filter(p -> p.endsWith(".jar")).collect(Collectors.joining(File.pathSeparator));
+    private static final String SPHERE = "src/main/java/ray/surface/Sphere.java";
+    private static final String GROUP = "src/main/java/ray/surface/Group.java";
+
+    @SuppressWarnings("unchecked")
+    private static Map<String, Object> grade(Path submission, String name) throws Exception {
+        Path out = FOLDER.getRoot().toPath().resolve("grade-" + name);
+        int status = new CommandLine(new Grader()).execute("--project", PROJECT.toString(), "--classpath", LIBRARIES,
+                "--submission", submission.toString(), "--out", out.toString());
+        assertEquals(0, status);
+        return new Gson().fromJson(Files.readString(out.resolve("results.json"), StandardCharsets.UTF_8), Map.class);
+    }
+
+    @SuppressWarnings("unchecked")
+    private static Map<Integer, double[]> pointsByTask(Map<String, Object> results) {
+        Map<Integer, double[]> byTask = new java.util.TreeMap<>();
+        for (Map<String, Object> t : (List<Map<String, Object>>) results.get("tests")) {
+            int task = Integer.parseInt(((String) t.get("number")).split("\\.")[0]);
+            double[] row = byTask.computeIfAbsent(task, k -> new double[2]);
+            row[0] += (Double) t.get("score");
+            row[1] += (Double) t.get("max_score");
+        }
+        return byTask;
+    }
+
+    /** A zip laid out like the handout under a top folder, with a stubbed sphere, an exiting group and junk. */
+    @Test(timeout = 600_000)
+    public void eachBrokenTaskLosesExactlyItsOwnPoints() throws Exception {
+        Path zip = FOLDER.getRoot().toPath().resolve("submission.zip");
+        try (OutputStream o = Files.newOutputStream(zip); ZipOutputStream z = new ZipOutputStream(o)) {
+            for (String file : StudentFiles.in(PROJECT).keySet()) {
+                String source = Files.readString(PROJECT.resolve(file), StandardCharsets.UTF_8);
+                if (file.equals(SPHERE)) {
+                    source = SolutionMarkers.studentVersion(source, file);
+                } else if (file.equals(GROUP)) {
+                    source = source.replace("Ray closestSoFar = ray.copy();", "System.exit(7);\n        Ray closestSoFar = ray.copy();");
+                }
+                put(z, "ray1/" + file, source);
+            }
+            put(z, "ray1/build.gradle", "this is not the instructor's build file");
+            put(z, "ray1/src/test/java/ray/surface/SphereTest.java", "class SphereTest { /* a student's own edit */ }");
+        }
+        Map<String, Object> results = grade(zip, "broken");
+        Map<Integer, double[]> byTask = pointsByTask(results);
+        assertEquals("task 1 keeps all its points", byTask.get(1)[1], byTask.get(1)[0], 0);
+        assertEquals("a stubbed sphere loses all of task 2", 0, byTask.get(2)[0], 0);
+        assertEquals("task 3 keeps all its points", byTask.get(3)[1], byTask.get(3)[0], 0);
+        assertEquals("an exiting group loses all of task 4", 0, byTask.get(4)[0], 0);
+        double max = (Double) results.get("max_score");
+        assertEquals(max - byTask.get(2)[1] - byTask.get(4)[1], (Double) results.get("score"), 1e-9);
+        String output = (String) results.get("output");
+        assertTrue(output, output.contains("Ignored (only the files you were asked to edit are graded): ray1/build.gradle, "
+                + "ray1/src/test/java/ray/surface/SphereTest.java"));
+        assertTrue(results.toString(), results.toString().contains("called System.exit"));
+    }
+
+    /** Flat files as Gradescope uploads them, one of which does not compile: score 0, the compiler's message as output. */
+    @Test(timeout = 300_000)
+    public void aSubmissionThatDoesNotCompileScoresZeroWithTheCompilerMessage() throws Exception {
+        Path flat = FOLDER.getRoot().toPath().resolve("flat");
+        Files.createDirectories(flat);
+        for (String file : StudentFiles.in(PROJECT).keySet()) {
+            String source = Files.readString(PROJECT.resolve(file), StandardCharsets.UTF_8);
+            if (file.equals(SPHERE)) {
+                source = source.replace("double halfB = f.dot(d);", "double halfB = f.dot(d)");
+            }
+            Files.writeString(flat.resolve(Path.of(file).getFileName().toString()), source, StandardCharsets.UTF_8);
+        }
+        Map<String, Object> results = grade(flat, "uncompilable");
+        assertEquals(0, (Double) results.get("score"), 0);
+        assertTrue((Double) results.get("max_score") > 50);
+        String output = (String) results.get("output");
+        assertTrue(output, output.contains("does not compile"));
+        assertTrue(output, output.contains("src/main/java/ray/surface/Sphere.java:") && output.contains("';' expected"));
+    }
+
+    private static void put(ZipOutputStream z, String name, String text) throws Exception {
+        z.putNextEntry(new ZipEntry(name));
+        z.write(text.getBytes(StandardCharsets.UTF_8));
+        z.closeEntry();
+    }
+}
