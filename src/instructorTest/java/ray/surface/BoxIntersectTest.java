@@ -19,15 +19,12 @@ import ray.math.Vec3;
  */
 public class BoxIntersectTest {
     private static final double TOL = 1e-14;
-    /** Half-extents 1, 2, 3 about the origin. */
-    private static final Vec3 MIN = v(-1, -2, -3);
-    private static final Vec3 MAX = v(1, 2, 3);
+    /** The box of BoxTest: half-extents 1, 2, 3 about the origin. */
+    private static final Vec3 MIN = BoxTest.MIN;
+    private static final Vec3 MAX = BoxTest.MAX;
 
     private static Surface box(Vec3 min, Vec3 max) {
-        Box box = new Box();
-        box.setMinPt(min);
-        box.setMaxPt(max);
-        return box.complete();
+        return BoxTest.box(min, max);
     }
 
     @Test

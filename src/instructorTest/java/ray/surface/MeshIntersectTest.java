@@ -18,16 +18,11 @@ import ray.Ray;
  */
 public class MeshIntersectTest {
     private static final double TOL = 1e-14;
-    private static final double[] SQUARE = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-    private static final int[] TRIANGLES = {0, 1, 2, 0, 2, 3};
-    /** Normals (0,0,1), (0.6,0,0.8), (0,0.6,0.8): all unit length. */
-    private static final double[] NORMALS = {0, 0, 1, 0.6, 0, 0.8, 0, 0.6, 0.8};
+    /** MeshTest's unit square: normals (0,0,1), (0.6,0,0.8), (0,0.6,0.8), all unit length. */
+    private static final double[] NORMALS = MeshTest.NORMALS;
 
     private static Mesh mesh(double[] normals, int[] triangleNormals) {
-        Mesh mesh = new Mesh();
-        mesh.setData(new MeshData(SQUARE, normals, TRIANGLES, triangleNormals));
-        assertSame(mesh, mesh.complete());
-        return mesh;
+        return MeshTest.mesh(normals, triangleNormals);
     }
 
     /** Straight down onto (x, y) of the square from z = 1, so t = 1. */

@@ -18,12 +18,13 @@ import org.junit.Test;
  */
 public class MeshTest {
     private static final double TOL = 1e-14;
-    private static final double[] SQUARE = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-    private static final int[] TRIANGLES = {0, 1, 2, 0, 2, 3};
+    static final double[] SQUARE = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    static final int[] TRIANGLES = {0, 1, 2, 0, 2, 3};
     /** Normals (0,0,1), (0.6,0,0.8), (0,0.6,0.8): all unit length. */
-    private static final double[] NORMALS = {0, 0, 1, 0.6, 0, 0.8, 0, 0.6, 0.8};
+    static final double[] NORMALS = {0, 0, 1, 0.6, 0, 0.8, 0, 0.6, 0.8};
 
-    private static Mesh mesh(double[] normals, int[] triangleNormals) {
+    /** The unit square as two triangles (shared with the instructor's MeshIntersectTest). */
+    static Mesh mesh(double[] normals, int[] triangleNormals) {
         Mesh mesh = new Mesh();
         mesh.setData(new MeshData(SQUARE, normals, TRIANGLES, triangleNormals));
         assertSame(mesh, mesh.complete());
