@@ -50,6 +50,17 @@ public class TestProcessTest {
             "    @Test public void g_hiddenAndWorthThree() { }",
             "}",
             "");
+    /** Student code run from a static initializer that exits: before any test starts, unless the runner defers it. */
+    private static final String EXITING_INITIALIZER = String.join("\n",
+            "package demo;",
+            "@ray.testing.Points(value = 1, task = ray.testing.StudentTask.TRIANGLE)",
+            "public class ExitingInitializerTest {",
+            "    static final int VALUE = exit();",
+            "    static int exit() { System.exit(5); return 0; }",
+            "    @org.junit.Test public void first() { }",
+            "    @org.junit.Test public void second() { }",
+            "}",
+            "");
     private static final String UNGRADED = "package demo;\npublic class UngradedTest {\n"
             + "    @org.junit.Test public void notCounted() { }\n}\n";
 
@@ -62,6 +73,7 @@ public class TestProcessTest {
         Files.createDirectories(tests);
         Files.writeString(tests.resolve("DemoTest.java"), DEMO, StandardCharsets.UTF_8);
         Files.writeString(tests.resolve("UngradedTest.java"), UNGRADED, StandardCharsets.UTF_8);
+        Files.writeString(tests.resolve("ExitingInitializerTest.java"), EXITING_INITIALIZER, StandardCharsets.UTF_8);
         CompileResult compiled = ProjectCompiler.compile(project, project.resolve("classes"), System.getProperty("java.class.path"));
         assertTrue(compiled.messages(), compiled.ok());
     }
@@ -73,7 +85,8 @@ public class TestProcessTest {
 
     @Test(timeout = 120_000)
     public void everyFailureCostsOnlyItsOwnTestAndLaterTestsStillRun() throws Exception {
-        List<TestOutcome> outcomes = process("run-all").run(null);
+        List<TestOutcome> all = process("run-all").run(null);
+        List<TestOutcome> outcomes = all.stream().filter(t -> t.className().equals("demo.DemoTest")).collect(Collectors.toList());
         Map<String, TestOutcome> byMethod = outcomes.stream().collect(Collectors.toMap(TestOutcome::method, Function.identity()));
         assertEquals(List.of("a_passes", "b_failsAnAssertion", "c_callsSystemExit", "d_loopsForeverIgnoringInterrupts",
                 "e_allocatesWithoutBound", "f_comparesNaN", "g_hiddenAndWorthThree"),
@@ -96,6 +109,13 @@ public class TestProcessTest {
         assertEquals(1, byMethod.get("a_passes").points(), 0);
         assertEquals(2, byMethod.get("a_passes").task());
         assertEquals("visible", byMethod.get("a_passes").visibility());
+        // The class whose initializer exits costs each of its tests, and nothing else.
+        List<TestOutcome> exiting = all.stream().filter(t -> t.className().equals("demo.ExitingInitializerTest"))
+                .collect(Collectors.toList());
+        assertEquals(2, exiting.size());
+        for (TestOutcome t : exiting) {
+            assertEquals("the code under test called System.exit, which ended the test JVM", t.message());
+        }
     }
 
     @Test(timeout = 60_000)
@@ -108,8 +128,8 @@ public class TestProcessTest {
     @Test(timeout = 60_000)
     public void listingNamesEveryGradedTestWithoutRunningIt() throws Exception {
         List<TestOutcome> listed = process("list").list(null);
-        assertEquals(7, listed.size());
+        assertEquals(9, listed.size());
         assertTrue(listed.stream().noneMatch(TestOutcome::passed));
-        assertEquals(9, listed.stream().mapToDouble(TestOutcome::points).sum(), 0);
+        assertEquals(11, listed.stream().mapToDouble(TestOutcome::points).sum(), 0);
     }
 }

@@ -114,10 +114,19 @@ public final class Grader implements Callable<Integer> {
                 outcomes.addAll(allFailed(task, "task " + task + "'s files do not compile on their own (do they use"
                         + " something you changed in another task's file?):\n" + taskCompiled.messages()));
             } else {
-                outcomes.addAll(tests(tree).run(task));
+                outcomes.addAll(runOrFail(tree, task));
             }
         }
         return outcomes;
+    }
+
+    /** The task's tests, or all of them failed with the reason when the test JVM cannot run them at all. */
+    private List<TestOutcome> runOrFail(Path tree, int task) throws IOException, InterruptedException {
+        try {
+            return tests(tree).run(task);
+        } catch (IllegalStateException e) {
+            return allFailed(task, "the tests could not run: " + e.getMessage());
+        }
     }
 
     /** Every graded test (of one task, or all), failed with the same reason: listed from the instructor's own tree. */
