@@ -1,6 +1,7 @@
 package ray;
 
 import ray.math.Vec3;
+import ray.surface.HitGeometry;
 import ray.surface.Surface;
 
 /**
@@ -22,6 +23,11 @@ public final class IntersectionRecord {
     public double beta;
     public double gamma;
 
+    // Framework-owned (a surface's intersect never touches these): see geometry().
+    private HitGeometry geometry;
+    /** The location object that {@link #geometry} describes; a surface reporting a new hit replaces location. */
+    private Vec3 geometryLocation;
+
     public void set(IntersectionRecord other) {
         t = other.t;
         location = other.location;
@@ -29,6 +35,28 @@ public final class IntersectionRecord {
         surface = other.surface;
         beta = other.beta;
         gamma = other.gamma;
+        geometry = other.geometry;
+        geometryLocation = other.geometryLocation;
+    }
+
+    /**
+     * The hit's geometry for starting new rays from it (used by the renderer, not by surfaces):
+     * the one that {@link ray.surface.Transformed} carried out of a transformed group, or else
+     * made now from location and surface, which are then in the coordinates of the caller.
+     * A surface that reports a hit after that replaces location, so a geometry kept from an
+     * earlier, farther hit is never taken for the new one.
+     */
+    public HitGeometry geometry() {
+        if (geometry == null || geometryLocation != location) {
+            setGeometry(HitGeometry.of(this));
+        }
+        return geometry;
+    }
+
+    /** Records {@code g} as the geometry of the hit now in this record (for {@link ray.surface.Transformed}). */
+    public void setGeometry(HitGeometry g) {
+        geometry = g;
+        geometryLocation = location;
     }
 
     @Override

@@ -77,6 +77,18 @@ public final class Affine {
                 a[2] * v.x + a[5] * v.y + a[8] * v.z);
     }
 
+    /**
+     * A bound on the coordinates of A·p + b for any p whose coordinates are at most {@code s} in
+     * magnitude: ‖A‖∞·s + max|b_i|. The rounding error of mapping a point grows with it.
+     */
+    public double pointScale(double s) {
+        double rows = 0;
+        for (int r = 0; r < 3; r++) {
+            rows = Math.max(rows, Math.abs(a[3 * r]) + Math.abs(a[3 * r + 1]) + Math.abs(a[3 * r + 2]));
+        }
+        return rows * s + b.maxAbs();
+    }
+
     public double determinant() {
         return a[0] * (a[4] * a[8] - a[5] * a[7])
                 - a[1] * (a[3] * a[8] - a[5] * a[6])

@@ -10,7 +10,8 @@ import ray.shading.Shader;
  * A surface placed by an affine map M. The ray is taken into the surface's own coordinates by
  * M⁻¹; its direction is not renormalized there, so t means the same in both spaces. Hits come
  * back by M, and normals by (M⁻¹)ᵀ (the inverse transpose keeps them perpendicular under
- * non-uniform scale).
+ * non-uniform scale). The hit's {@link HitGeometry} (for new rays) is made in the surface's
+ * coordinates and mapped out the same way.
  */
 public final class Transformed extends Surface {
     private final Surface surface;
@@ -33,8 +34,11 @@ public final class Transformed extends Surface {
         if (!surface.intersect(out, local)) {
             return false;
         }
+        // The geometry for new rays is made where the primitive's own numbers are, and carried out.
+        HitGeometry geometry = out.geometry().placedBy(toWorld, toLocal);
         out.location = toWorld.applyToPoint(out.location);
         out.normal = toLocal.applyTransposeToVector(out.normal).normalized();
+        out.setGeometry(geometry);
         return true;
     }
 

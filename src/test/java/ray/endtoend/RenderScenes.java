@@ -50,6 +50,11 @@ final class RenderScenes {
         tasks.put("wire-box", StudentTask.GROUP);
         tasks.put("group-transforms", StudentTask.GROUP);
         tasks.put("glazed-sphere", StudentTask.GROUP);
+        // The numerically hard cases (scenes/hard, docs/numerics.md), each under the task whose code it strains most.
+        tasks.put("far-tiny-sphere", StudentTask.SPHERE);
+        tasks.put("huge-ground-sphere", StudentTask.SPHERE);
+        tasks.put("inside-closed-mesh", StudentTask.TRIANGLE);
+        tasks.put("far-from-origin", StudentTask.GROUP);
         TASKS = Collections.unmodifiableMap(tasks);
     }
 
