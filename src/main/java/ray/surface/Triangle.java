@@ -17,6 +17,8 @@ public class Triangle extends Surface {
     private Vec3 n1;
     private Vec3 n2;
     private Vec3 faceNormal = new Vec3(0, 0, 1);
+    /** Whether the vertices span no area (collinear, repeated, or not finite); set by complete(). */
+    private boolean degenerate;
 
     public Triangle() {
     }
@@ -68,9 +70,17 @@ public class Triangle extends Surface {
         return faceNormal;
     }
 
+    /**
+     * Computes the face normal. A triangle without area (collinear or repeated vertices, a
+     * non-finite coordinate, or an edge cross product that underflows to zero or overflows) is
+     * degenerate: its face normal is the zero vector (never NaN), and the flag {@code degenerate}
+     * lets intersect reject it at once, since no ray can hit it.
+     */
     @Override
     public Surface complete() {
-        faceNormal = v1.minus(v0).cross(v2.minus(v0)).normalized();
+        Vec3 cross = v1.minus(v0).cross(v2.minus(v0));
+        degenerate = !(cross.isFinite() && cross.lengthSquared() > 0);
+        faceNormal = degenerate ? Vec3.ZERO : cross.normalized();
         return this;
     }
 
@@ -80,7 +90,8 @@ public class Triangle extends Surface {
             return faceNormal;
         }
         Vec3 blend = n0.times(1 - beta - gamma).plus(n1.times(beta)).plus(n2.times(gamma)).normalized();
-        return blend.lengthSquared() > 0 ? blend : faceNormal;
+        // Normals that cancel out, or NaN/infinite inputs, fall back to the face normal (finite by complete()).
+        return blend.isFinite() && blend.lengthSquared() > 0 ? blend : faceNormal;
     }
 
     @Override
@@ -95,48 +106,158 @@ public class Triangle extends Surface {
         //   4) On a hit fill out.t, out.location, out.normal = normalAt(beta, gamma), out.surface = this,
         //      out.beta and out.gamma, then return true. On a miss, return false and leave out alone.
         // BEGIN SOLUTION
-        // Columns of the system's matrix: a = v0 − v1, b = v0 − v2, d; right-hand side r = v0 − p.
-        double ax = v0.x - v1.x, ay = v0.y - v1.y, az = v0.z - v1.z;
-        double bx = v0.x - v2.x, by = v0.y - v2.y, bz = v0.z - v2.z;
-        double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
-        double rx = v0.x - ray.origin.x, ry = v0.y - ray.origin.y, rz = v0.z - ray.origin.z;
-
-        // Shared 2×2 minors of the last two columns keep Cramer's rule to a few multiplications.
-        double byDzMinusBzDy = by * dz - bz * dy;
-        double bzDxMinusBxDz = bz * dx - bx * dz;
-        double bxDyMinusByDx = bx * dy - by * dx;
-        double det = ax * byDzMinusBzDy + ay * bzDxMinusBxDz + az * bxDyMinusByDx;
-        // No absolute epsilon: it would make small triangles vanish. Exactly parallel rays and
-        // degenerate triangles give det == 0; NaN inputs fail the comparisons below.
+        // Not Cramer's rule but the watertight test of Woop, Benthin and Wald, "Watertight
+        // Ray/Triangle Intersection", JCGT 2(1), 2013: a ray aimed exactly at an edge or vertex
+        // shared by two triangles hits at least one of them, which Cramer's rule does not promise.
+        if (degenerate) {
+            return false;
+        }
+        // Name the axes so that the ray's largest direction component is z, by a cyclic shift that
+        // keeps the frame right-handed. (The paper also swaps x and y when that component is
+        // negative, to keep the winding for back-face culling; this test is two-sided and divides
+        // by det, so a mirror, which negates u, v, w and det together, changes nothing.)
+        Vec3 p = ray.origin;
+        Vec3 d = ray.direction;
+        int kz = largestAxis(d);
+        // Vertices relative to the ray origin, in the shifted axes (one row per shift).
+        double a0 = v0.x - p.x, a1 = v0.y - p.y, a2 = v0.z - p.z;
+        double b0 = v1.x - p.x, b1 = v1.y - p.y, b2 = v1.z - p.z;
+        double c0 = v2.x - p.x, c1 = v2.y - p.y, c2 = v2.z - p.z;
+        double ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz;
+        if (kz == 2) {
+            ax = a0; ay = a1; az = a2; bx = b0; by = b1; bz = b2; cx = c0; cy = c1; cz = c2; dx = d.x; dy = d.y; dz = d.z;
+        } else if (kz == 0) {
+            ax = a1; ay = a2; az = a0; bx = b1; by = b2; bz = b0; cx = c1; cy = c2; cz = c0; dx = d.y; dy = d.z; dz = d.x;
+        } else {
+            ax = a2; ay = a0; az = a1; bx = b2; by = b0; bz = b1; cx = c2; cy = c0; cz = c1; dx = d.z; dy = d.x; dz = d.y;
+        }
+        // Shear the vertices so that the ray becomes the +z axis through the origin. Each vertex's
+        // 2D position depends on that vertex and the ray only, so triangles that share it agree.
+        double sz = 1 / dz;
+        double sx = dx * sz;
+        double sy = dy * sz;
+        ax -= sx * az;
+        ay -= sy * az;
+        bx -= sx * bz;
+        by -= sy * bz;
+        cx -= sx * cz;
+        cy -= sy * cz;
+        // 2D edge functions: u for edge v1v2, v for v2v0, w for v0v1; each is twice the signed area
+        // of the sub-triangle (ray, edge) and so the weight of the opposite vertex. The same edge
+        // walked backwards by a neighbor gives exactly −u (same products, swapped subtraction), so
+        // two neighbors always agree on which side of their shared edge the ray passes.
+        double u = cx * by - cy * bx;
+        double v = ax * cy - ay * cx;
+        // Most rays miss most triangles: reject on two edges before computing the third.
+        if ((u < 0 && v > 0) || (u > 0 && v < 0)) {
+            return false;
+        }
+        double w = bx * ay - by * ax;
+        // A zero may be a rounded-away tiny value; its true sign decides which side the ray is on.
+        if (u == 0 || v == 0 || w == 0) {
+            u = u == 0 ? differenceOfProducts(cx, by, cy, bx) : u;
+            v = v == 0 ? differenceOfProducts(ax, cy, ay, cx) : v;
+            w = w == 0 ? differenceOfProducts(bx, ay, by, ax) : w;
+        }
+        // Inside (edges and vertices included) when all three have one sign; NaN fails both tests.
+        if (!((u >= 0 && v >= 0 && w >= 0) || (u <= 0 && v <= 0 && w <= 0))) {
+            return false;
+        }
+        double det = u + v + w;
         if (det == 0) {
+            return false; // the ray lies in the triangle's plane, or passes through it edge-on
+        }
+        // A ray exactly parallel to the plane (beside it or in it) projects the triangle onto a
+        // segment, but the shear's rounding can leave a sliver around the ray, with a det of
+        // rounding size: below 512·2⁻⁵³·m², m the largest vertex coordinate relative to the ray
+        // origin (a rough error bound is 250·2⁻⁵³·m²; in-plane rays measured at most 1.2·2⁻⁵³·m²).
+        // Only such a det needs the exact test.
+        double m = Math.max(largestMagnitude(a0, a1, a2), Math.max(largestMagnitude(b0, b1, b2), largestMagnitude(c0, c1, c2)));
+        if (Math.abs(det) <= PARALLEL_BOUND * m * m && parallelToPlane(d)) {
             return false;
         }
-        double invDet = 1 / det;
-        double beta = (rx * byDzMinusBzDy + ry * bzDxMinusBxDz + rz * bxDyMinusByDx) * invDet;
-        if (!(beta >= 0 && beta <= 1)) {
-            return false;
-        }
-        double aYrZMinusRyAz = ay * rz - ry * az;
-        double aZrXMinusRzAx = az * rx - rz * ax;
-        double aXrYMinusRxAy = ax * ry - rx * ay;
-        double gamma = (dz * aXrYMinusRxAy + dy * aZrXMinusRzAx + dx * aYrZMinusRyAz) * invDet;
-        if (!(gamma >= 0 && beta + gamma <= 1)) {
-            return false;
-        }
-        double t = -(bz * aXrYMinusRxAy + by * aZrXMinusRzAx + bx * aYrZMinusRyAz) * invDet;
+        // The hit's z in the sheared frame (z scaled by sz), interpolated with the unnormalized
+        // weights, is det·t.
+        double t = (u * (sz * az) + v * (sz * bz) + w * (sz * cz)) / det;
         if (!(t > ray.start && t < ray.end)) {
             return false;
         }
-        out.t = t;
-        out.location = ray.pointAt(t);
-        out.normal = normalAt(beta, gamma);
-        out.surface = this;
-        out.beta = beta;
-        out.gamma = gamma;
+        // An infinite direction gives sz = 0 and so t = 0, which a segment starting below 0 accepts,
+        // at the point origin + 0·∞ = NaN: only a finite location makes a hit.
+        Vec3 location = ray.pointAt(t);
+        if (!location.isFinite()) {
+            return false;
+        }
+        fill(out, t, location, v / det, w / det);
         return true;
         // END SOLUTION
         // STUB: return false;
     }
+    // BEGIN SOLUTION
+
+    /** Records a hit with barycentrics beta (the weight of v1) and gamma (the weight of v2). */
+    private void fill(IntersectionRecord out, double t, Vec3 location, double beta, double gamma) {
+        out.t = t;
+        out.location = location;
+        out.normal = normalAt(beta, gamma);
+        out.surface = this;
+        out.beta = beta;
+        out.gamma = gamma;
+    }
+
+    /** 512·2⁻⁵³: see the parallel test in intersect. */
+    private static final double PARALLEL_BOUND = 0x1p-44;
+
+    /**
+     * Whether d is exactly parallel to the triangle's plane, d·((v1 − v0) × (v2 − v0)) = 0, in exact
+     * arithmetic (BigDecimal holds every product of doubles exactly). Slow, but only asked when the
+     * double computation cannot tell, which rendering practically never reaches. A non-finite d
+     * counts as parallel: it has no finite hit anyway, and BigDecimal cannot hold it. (The vertices
+     * are finite: complete() marks any other triangle degenerate.)
+     */
+    private boolean parallelToPlane(Vec3 d) {
+        if (!d.isFinite()) {
+            return true;
+        }
+        var e1x = exact(v1.x).subtract(exact(v0.x));
+        var e1y = exact(v1.y).subtract(exact(v0.y));
+        var e1z = exact(v1.z).subtract(exact(v0.z));
+        var e2x = exact(v2.x).subtract(exact(v0.x));
+        var e2y = exact(v2.y).subtract(exact(v0.y));
+        var e2z = exact(v2.z).subtract(exact(v0.z));
+        var nx = e1y.multiply(e2z).subtract(e1z.multiply(e2y));
+        var ny = e1z.multiply(e2x).subtract(e1x.multiply(e2z));
+        var nz = e1x.multiply(e2y).subtract(e1y.multiply(e2x));
+        return exact(d.x).multiply(nx).add(exact(d.y).multiply(ny)).add(exact(d.z).multiply(nz)).signum() == 0;
+    }
+
+    private static java.math.BigDecimal exact(double x) {
+        return new java.math.BigDecimal(x);
+    }
+
+    private static double largestMagnitude(double x, double y, double z) {
+        return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
+    }
+
+    /** The axis of v's largest absolute component (x on ties with y or z, y on ties with z). */
+    private static int largestAxis(Vec3 v) {
+        double x = Math.abs(v.x);
+        double y = Math.abs(v.y);
+        double z = Math.abs(v.z);
+        return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
+    }
+
+    /**
+     * p·q − r·s by Kahan's 2×2 determinant: the rounding error of r·s, which an FMA finds exactly, is
+     * added back. Its relative error is at most 2⁻⁵² (Jeannerod, Louvet and Muller, Math. Comp. 82,
+     * 2013), so barring underflow its sign is exact and it is zero only when p·q = r·s exactly.
+     */
+    private static double differenceOfProducts(double p, double q, double r, double s) {
+        double rs = r * s;
+        double roundingOfRs = Math.fma(-r, s, rs);
+        return Math.fma(p, q, -rs) + roundingOfRs;
+    }
+    // END SOLUTION
 
     @Override
     public String toString() {
