@@ -45,14 +45,24 @@ public class GraderTest {
         return new Gson().fromJson(Files.readString(out.resolve("results.json"), StandardCharsets.UTF_8), Map.class);
     }
 
+    /**
+     * Per task: regular points scored, regular points possible, bonus points scored, bonus tests
+     * failed. Bonus tests (tagged "bonus") have max_score 0 and are counted apart.
+     */
     @SuppressWarnings("unchecked")
     private static Map<Integer, double[]> pointsByTask(Map<String, Object> results) {
         Map<Integer, double[]> byTask = new java.util.TreeMap<>();
         for (Map<String, Object> t : (List<Map<String, Object>>) results.get("tests")) {
             int task = Integer.parseInt(((String) t.get("number")).split("\\.")[0]);
-            double[] row = byTask.computeIfAbsent(task, k -> new double[2]);
-            row[0] += (Double) t.get("score");
-            row[1] += (Double) t.get("max_score");
+            double[] row = byTask.computeIfAbsent(task, k -> new double[4]);
+            if (((List<String>) t.get("tags")).contains("bonus")) {
+                assertEquals(t.get("name") + " is a bonus test", 0, (Double) t.get("max_score"), 0);
+                row[2] += (Double) t.get("score");
+                row[3] += "failed".equals(t.get("status")) ? 1 : 0;
+            } else {
+                row[0] += (Double) t.get("score");
+                row[1] += (Double) t.get("max_score");
+            }
         }
         return byTask;
     }
@@ -78,10 +88,15 @@ public class GraderTest {
         Map<Integer, double[]> byTask = pointsByTask(results);
         assertEquals("task 1 keeps all its points", byTask.get(1)[1], byTask.get(1)[0], 0);
         assertEquals("a stubbed sphere loses all of task 2", 0, byTask.get(2)[0], 0);
+        assertEquals("a stubbed sphere earns no bonus", 0, byTask.get(2)[2], 0);
         assertEquals("task 3 keeps all its points", byTask.get(3)[1], byTask.get(3)[0], 0);
+        assertTrue("task 3 has bonus tests", byTask.get(3)[2] > 0);
+        assertEquals("task 3 (the solution) passes every bonus test", 0, byTask.get(3)[3], 0);
         assertEquals("an exiting group loses all of task 4", 0, byTask.get(4)[0], 0);
         double max = (Double) results.get("max_score");
-        assertEquals(max - byTask.get(2)[1] - byTask.get(4)[1], (Double) results.get("score"), 1e-9);
+        double bonus = byTask.values().stream().mapToDouble(row -> row[2]).sum();
+        // The score is what the regular tests of tasks 1 and 3 earn, plus every bonus point earned on top.
+        assertEquals(max - byTask.get(2)[1] - byTask.get(4)[1] + bonus, (Double) results.get("score"), 1e-9);
         String output = (String) results.get("output");
         assertTrue(output, output.contains("Ignored (only the files you were asked to edit are graded): ray1/build.gradle, "
                 + "ray1/src/test/java/ray/surface/SphereTest.java"));

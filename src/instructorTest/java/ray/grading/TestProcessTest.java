@@ -19,7 +19,8 @@ import org.junit.rules.TemporaryFolder;
 /**
  * The test JVM survives student code at its worst: a System.exit, an infinite loop that ignores
  * interrupts, unbounded allocation, an assertion on NaN. Each costs its own test only, and every
- * test after it still runs. Runs a small project compiled here, with graded and ungraded tests.
+ * test after it still runs. Runs a small project compiled here, with graded, bonus and ungraded
+ * tests: the bonus flag of @Points reaches each outcome.
  */
 public class TestProcessTest {
     @ClassRule
@@ -48,6 +49,10 @@ public class TestProcessTest {
             "    @Test public void f_comparesNaN() { assertEquals(0.5, Double.NaN, 1e-9); }",
             "    @Points(value = 3, task = StudentTask.GROUP, visibility = Visibility.HIDDEN)",
             "    @Test public void g_hiddenAndWorthThree() { }",
+            "    @Points(value = 2, task = StudentTask.SPHERE, bonus = true)",
+            "    @Test public void h_bonusPasses() { }",
+            "    @Points(value = 0.5, task = StudentTask.SPHERE, bonus = true)",
+            "    @Test public void i_bonusFails() { assertEquals(\"bonus\", \"nope\"); }",
             "}",
             "");
     /** Student code run from a static initializer that exits: before any test starts, unless the runner defers it. */
@@ -89,7 +94,7 @@ public class TestProcessTest {
         List<TestOutcome> outcomes = all.stream().filter(t -> t.className().equals("demo.DemoTest")).collect(Collectors.toList());
         Map<String, TestOutcome> byMethod = outcomes.stream().collect(Collectors.toMap(TestOutcome::method, Function.identity()));
         assertEquals(List.of("a_passes", "b_failsAnAssertion", "c_callsSystemExit", "d_loopsForeverIgnoringInterrupts",
-                "e_allocatesWithoutBound", "f_comparesNaN", "g_hiddenAndWorthThree"),
+                "e_allocatesWithoutBound", "f_comparesNaN", "g_hiddenAndWorthThree", "h_bonusPasses", "i_bonusFails"),
                 outcomes.stream().map(TestOutcome::method).collect(Collectors.toList()));
         assertTrue(byMethod.get("a_passes").passed());
         assertFalse(byMethod.get("b_failsAnAssertion").passed());
@@ -109,6 +114,21 @@ public class TestProcessTest {
         assertEquals(1, byMethod.get("a_passes").points(), 0);
         assertEquals(2, byMethod.get("a_passes").task());
         assertEquals("visible", byMethod.get("a_passes").visibility());
+        assertFalse(byMethod.get("a_passes").bonus());
+        assertFalse(hidden.bonus());
+        TestOutcome bonusPassed = byMethod.get("h_bonusPasses");
+        assertTrue(bonusPassed.bonus());
+        assertTrue(bonusPassed.passed());
+        assertEquals(2, bonusPassed.points(), 0);
+        assertEquals(2, bonusPassed.task());
+        TestOutcome bonusFailed = byMethod.get("i_bonusFails");
+        assertTrue(bonusFailed.bonus());
+        assertFalse(bonusFailed.passed());
+        assertEquals(0.5, bonusFailed.points(), 0);
+        // Regular: a–f at 1 each (only a passed) and g at 3 (passed); bonus: h passed (2), i failed (0.5).
+        Map<String, Object> results = GradescopeResults.of(outcomes, "", 1);
+        assertEquals(6 + 3 + 0, (Double) results.get("max_score"), 0);
+        assertEquals(1 + 3 + 2, (Double) results.get("score"), 0);
         // The class whose initializer exits costs each of its tests, and nothing else.
         List<TestOutcome> exiting = all.stream().filter(t -> t.className().equals("demo.ExitingInitializerTest"))
                 .collect(Collectors.toList());
@@ -128,8 +148,10 @@ public class TestProcessTest {
     @Test(timeout = 60_000)
     public void listingNamesEveryGradedTestWithoutRunningIt() throws Exception {
         List<TestOutcome> listed = process("list").list(null);
-        assertEquals(9, listed.size());
+        assertEquals(11, listed.size());
         assertTrue(listed.stream().noneMatch(TestOutcome::passed));
-        assertEquals(11, listed.stream().mapToDouble(TestOutcome::points).sum(), 0);
+        // DemoTest 1·6 + 3 + bonus 2 + 0.5, ExitingInitializerTest 1·2.
+        assertEquals(13.5, listed.stream().mapToDouble(TestOutcome::points).sum(), 0);
+        assertEquals(2, listed.stream().filter(TestOutcome::bonus).count());
     }
 }

@@ -23,7 +23,7 @@ import picocli.CommandLine.Option;
  * sphere's points and nothing else, and no test needs its own copy of the solution. Before that,
  * all the student's files together must compile; a submission that does not compile scores 0,
  * with the compiler's messages as the output. Without a submission, the instructor's own tree is
- * graded (it should score full marks).
+ * graded (it should score full marks, and every bonus point on top).
  */
 @Command(name = "grade", mixinStandardHelpOptions = true, description = "Grades the instructor tree or a submission.")
 public final class Grader implements Callable<Integer> {

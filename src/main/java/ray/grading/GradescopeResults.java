@@ -18,6 +18,13 @@ import java.util.TreeMap;
  * {@code output}, {@code visibility}, {@code stdout_visibility} and one entry per test with
  * {@code name}, {@code number}, {@code score}, {@code max_score}, {@code status}, {@code output},
  * {@code tags} and {@code visibility}.
+ *
+ * <p>A bonus test ({@code @Points(..., bonus = true)}) is extra credit: its entry has
+ * {@code max_score} 0 and {@code score} = its points when it passed (0 when it failed), a
+ * {@code "bonus"} tag and " (bonus)" after its name. The total {@code max_score} counts only the
+ * regular tests' points, and the total {@code score} counts every point earned, bonus included, so a
+ * submission can score above the maximum: Gradescope shows a score above the assignment's points as
+ * extra credit, and a failed bonus test costs nothing.
  */
 public final class GradescopeResults {
     private GradescopeResults() {
@@ -31,17 +38,18 @@ public final class GradescopeResults {
         for (TestOutcome t : outcomes) {
             int n = numberInTask.merge(t.task(), 1, Integer::sum);
             Map<String, Object> test = new LinkedHashMap<>();
-            test.put("name", "Task " + t.task() + " (" + t.taskTitle() + "): " + simpleName(t.className()) + "." + t.method());
+            test.put("name", "Task " + t.task() + " (" + t.taskTitle() + "): " + simpleName(t.className()) + "." + t.method()
+                    + (t.bonus() ? " (bonus)" : ""));
             test.put("number", t.task() + "." + n);
-            test.put("score", t.passed() ? t.points() : 0.0);
-            test.put("max_score", t.points());
+            test.put("score", t.earned());
+            test.put("max_score", t.possible());
             test.put("status", t.passed() ? "passed" : "failed");
             test.put("output", t.message());
-            test.put("tags", List.of("task" + t.task()));
+            test.put("tags", t.bonus() ? List.of("task" + t.task(), "bonus") : List.of("task" + t.task()));
             test.put("visibility", t.visibility());
             tests.add(test);
-            score += t.passed() ? t.points() : 0;
-            max += t.points();
+            score += t.earned();
+            max += t.possible();
         }
         Map<String, Object> results = new LinkedHashMap<>();
         results.put("score", score);
@@ -68,31 +76,45 @@ public final class GradescopeResults {
         }
     }
 
-    /** The console table: one row per task with tests passed and points. */
+    /**
+     * The console table: one row per task with its regular tests passed and points, and the bonus
+     * points earned of those offered ("-" for a task without bonus tests).
+     */
     public static String table(List<TestOutcome> outcomes) {
+        // Per task: regular tests passed, regular tests, points earned, points possible, bonus earned, bonus offered.
         Map<Integer, double[]> byTask = new TreeMap<>();
         Map<Integer, String> titles = new TreeMap<>();
         for (TestOutcome t : outcomes) {
-            double[] row = byTask.computeIfAbsent(t.task(), k -> new double[4]);
-            row[0] += t.passed() ? 1 : 0;
-            row[1] += 1;
-            row[2] += t.passed() ? t.points() : 0;
-            row[3] += t.points();
+            double[] row = byTask.computeIfAbsent(t.task(), k -> new double[6]);
+            if (t.bonus()) {
+                row[4] += t.earned();
+                row[5] += t.points();
+            } else {
+                row[0] += t.passed() ? 1 : 0;
+                row[1] += 1;
+                row[2] += t.earned();
+                row[3] += t.points();
+            }
             titles.put(t.task(), t.taskTitle());
         }
-        StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%-24s %12s %14s%n", "task", "tests passed", "points"));
-        double[] total = new double[4];
+        StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%-24s %12s  %9s%6s  %8s%n", "task", "tests passed", "points", "", "bonus"));
+        double[] total = new double[6];
         for (Map.Entry<Integer, double[]> e : byTask.entrySet()) {
             double[] r = e.getValue();
-            s.append(String.format(Locale.ROOT, "%-24s %5d / %-4d %6s / %-6s%n", "Task " + e.getKey() + " (" + titles.get(e.getKey()) + ")",
-                    (int) r[0], (int) r[1], number(r[2]), number(r[3])));
-            for (int k = 0; k < 4; k++) {
+            s.append(row("Task " + e.getKey() + " (" + titles.get(e.getKey()) + ")", r));
+            for (int k = 0; k < total.length; k++) {
                 total[k] += r[k];
             }
         }
-        s.append(String.format(Locale.ROOT, "%-24s %5d / %-4d %6s / %-6s%n", "total", (int) total[0], (int) total[1],
-                number(total[2]), number(total[3])));
+        s.append(row("total", total));
         return s.toString();
+    }
+
+    /** One line of the table; trailing blanks dropped, since the bonus column is often empty. */
+    private static String row(String name, double[] r) {
+        String bonus = r[5] > 0 ? String.format(Locale.ROOT, "%6s / %-6s", number(r[4]), number(r[5])) : String.format("%6s", "-");
+        return String.format(Locale.ROOT, "%-24s %5d / %-4d  %6s / %-6s  %s", name, (int) r[0], (int) r[1], number(r[2]),
+                number(r[3]), bonus).stripTrailing() + System.lineSeparator();
     }
 
     private static String number(double x) {

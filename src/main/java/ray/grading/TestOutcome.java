@@ -5,13 +5,25 @@ package ray.grading;
  *
  * @param id          "ClassName#method" as JUnit names it (parameterized tests add "[name]")
  * @param task        the task number the points count toward
+ * @param points      what the test is worth
+ * @param bonus       extra credit: {@code points} are earned when it passes, nothing is lost when it fails
  * @param visibility  Gradescope's visibility value
  * @param message     why it failed (empty when it passed)
  */
 public record TestOutcome(String id, String className, String method, int task, String taskTitle, double points,
-        String visibility, boolean passed, String message, double seconds) {
+        boolean bonus, String visibility, boolean passed, String message, double seconds) {
 
     TestOutcome failedWith(String why) {
-        return new TestOutcome(id, className, method, task, taskTitle, points, visibility, false, why, seconds);
+        return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, false, why, seconds);
+    }
+
+    /** The points this outcome earns: all of them when it passed, none when it failed. */
+    public double earned() {
+        return passed ? points : 0;
+    }
+
+    /** The points it adds to the maximum score: its points, or none for a bonus test. */
+    public double possible() {
+        return bonus ? 0 : points;
     }
 }

@@ -219,7 +219,7 @@ public final class TestProcess {
         Object seconds = e.get("seconds");
         return new TestOutcome((String) e.get("test"), (String) e.get("class"), (String) e.get("method"),
                 ((Number) e.get("task")).intValue(), (String) e.get("title"), ((Number) e.get("points")).doubleValue(),
-                (String) e.get("visibility"), passed, message == null ? "" : message,
+                Boolean.TRUE.equals(e.get("bonus")), (String) e.get("visibility"), passed, message == null ? "" : message,
                 seconds == null ? 0 : ((Number) seconds).doubleValue());
     }
 }

@@ -142,6 +142,7 @@ public final class TestRunnerMain {
             m.put("task", 0);
             m.put("title", "ungraded");
             m.put("points", 0.0);
+            m.put("bonus", false);
             m.put("visibility", "visible");
             m.put("class", d.getClassName());
             m.put("method", d.getMethodName());
@@ -149,7 +150,7 @@ public final class TestRunnerMain {
         return m;
     }
 
-    /** The test's @Points as task number, task title, points and visibility; null for ungraded tests. */
+    /** The test's @Points as task number, task title, points, bonus and visibility; null for ungraded tests. */
     private static Map<String, Object> grading(Description d) {
         Annotation points = find(d.getAnnotations());
         if (points == null && d.getTestClass() != null) {
@@ -164,6 +165,7 @@ public final class TestRunnerMain {
             m.put("task", task.getClass().getField("number").get(task));
             m.put("title", task.getClass().getField("title").get(task));
             m.put("points", call(points, "value"));
+            m.put("bonus", call(points, "bonus"));
             Object visibility = call(points, "visibility");
             m.put("visibility", visibility.getClass().getField("gradescope").get(visibility));
             m.put("class", d.getClassName());

@@ -11,6 +11,9 @@ import java.lang.annotation.Target;
  *
  * <p>Tests under src/test/java ship to students and must be {@link Visibility#VISIBLE}; hidden
  * tests live under src/instructorTest/java and never leave the instructor's tree.
+ *
+ * <p>A {@link #bonus()} test is extra credit: it adds {@code value} points when it passes and costs
+ * nothing when it fails.
  */
 @Retention(RetentionPolicy.RUNTIME)
 @Target({ElementType.TYPE, ElementType.METHOD})
@@ -20,4 +23,12 @@ public @interface Points {
     StudentTask task();
 
     Visibility visibility() default Visibility.VISIBLE;
+
+    /**
+     * Extra credit: the test is worth {@code value} points on top of the maximum when it passes and
+     * nothing when it fails. In Gradescope's results.json it has {@code max_score} 0 and
+     * {@code score} = {@code value} when passed; Gradescope shows a score above the maximum as extra
+     * credit. Its failure message names the task with ", bonus" (see {@link StudentTaskRule}).
+     */
+    boolean bonus() default false;
 }

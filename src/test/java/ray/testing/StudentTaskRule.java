@@ -11,6 +11,10 @@ import org.junit.runners.model.Statement;
  * costs that test only), and failure messages that say which task failed and where to work.
  *
  * <pre>{@code @Rule public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);}</pre>
+ *
+ * <p>A failure reads "[Task 2 (Sphere)] what went wrong", or "[Task 2 (Sphere), bonus] ..." for a
+ * test whose {@link Points} says {@code bonus = true}, so that a student sees at once that a
+ * failure costs no regular points.
  */
 public final class StudentTaskRule implements TestRule {
     /** Seconds a unit test of student code may take: a correct solution needs milliseconds. */
@@ -39,6 +43,7 @@ public final class StudentTaskRule implements TestRule {
 
     @Override
     public Statement apply(Statement base, Description description) {
+        String label = "[" + task.label() + (isBonus(description) ? ", bonus" : "") + "] ";
         Statement limited = Timeout.builder().withTimeout(seconds, TimeUnit.SECONDS).withLookingForStuckThread(true)
                 .build().apply(base, description);
         return new Statement() {
@@ -47,18 +52,27 @@ public final class StudentTaskRule implements TestRule {
                 try {
                     limited.evaluate();
                 } catch (AssertionError e) {
-                    throw explained(e.getMessage(), e);
+                    throw explained(label, e.getMessage(), e);
                 } catch (org.junit.runners.model.TestTimedOutException e) {
-                    throw explained("took longer than " + seconds + " s: is there a loop that never ends?", e);
+                    throw explained(label, "took longer than " + seconds + " s: is there a loop that never ends?", e);
                 } catch (Exception | StackOverflowError | OutOfMemoryError e) {
-                    throw explained("your code threw " + e + where(e), e);
+                    throw explained(label, "your code threw " + e + where(e), e);
                 }
             }
         };
     }
 
-    private AssertionError explained(String message, Throwable cause) {
-        AssertionError error = new AssertionError("[" + task.label() + "] " + message + "\n    Work on the TODO(Task "
+    /** Whether the test's own @Points, or else its class's, marks it as a bonus test. */
+    private static boolean isBonus(Description description) {
+        Points points = description.getAnnotation(Points.class);
+        if (points == null && description.getTestClass() != null) {
+            points = description.getTestClass().getAnnotation(Points.class);
+        }
+        return points != null && points.bonus();
+    }
+
+    private AssertionError explained(String label, String message, Throwable cause) {
+        AssertionError error = new AssertionError(label + message + "\n    Work on the TODO(Task "
                 + task.number + ") comments in " + String.join(" and ", task.files) + ".", cause);
         error.setStackTrace(cause.getStackTrace());
         return error;
