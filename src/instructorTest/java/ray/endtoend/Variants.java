@@ -15,6 +15,8 @@ import ray.camera.Camera;
 import ray.image.Image;
 import ray.image.PngWriter;
 import ray.math.Vec3;
+import ray.numerics.TextbookSurfaces;
+import ray.numerics.TextbookTriangles;
 import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneLoader;
@@ -76,14 +78,14 @@ final class Variants {
     /** Correct variant: every sphere intersected by the textbook quadratic b² − 4ac, without re-projecting the hit. */
     static BufferedImage textbookSpheres(Path file) {
         Scene scene = SceneLoader.load(file);
-        replacePrimitives(scene.getSurfaces(), s -> s instanceof Sphere ? new TextbookSphere((Sphere) s) : s);
+        replacePrimitives(scene.getSurfaces(), s -> s instanceof Sphere ? TextbookSurfaces.sphere((Sphere) s) : s);
         return render(scene);
     }
 
     /** Correct variant: every triangle intersected by Möller–Trumbore instead of Cramer's rule. */
     static BufferedImage mollerTrumboreTriangles(Path file) {
         Scene scene = SceneLoader.load(file);
-        replacePrimitives(scene.getSurfaces(), s -> s instanceof Triangle ? new MollerTrumbore((Triangle) s) : s);
+        replacePrimitives(scene.getSurfaces(), s -> s instanceof Triangle ? TextbookSurfaces.triangle((Triangle) s, TextbookTriangles.MOLLER_TRUMBORE) : s);
         return render(scene);
     }
 
@@ -207,87 +209,6 @@ final class Variants {
                     return tracer.radiance(h, direction, d);
                 }
             }, depth);
-        }
-    }
-
-    /** A sphere hit by the textbook formula: a t² + b t + c = 0, t = (−b ∓ √(b² − 4ac)) / 2a; the hit is reported as the original sphere's. */
-    static final class TextbookSphere extends Surface {
-        private final Sphere sphere;
-
-        TextbookSphere(Sphere sphere) {
-            this.sphere = sphere;
-        }
-
-        @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
-            Vec3 c = sphere.getCenter();
-            double radius = sphere.getRadius();
-            Vec3 d = ray.direction;
-            Vec3 f = ray.origin.minus(c);
-            double a = d.dot(d);
-            double b = 2 * d.dot(f);
-            double cc = f.dot(f) - radius * radius;
-            double discriminant = b * b - 4 * a * cc;
-            if (discriminant < 0) {
-                return false;
-            }
-            double root = Math.sqrt(discriminant);
-            double t = (-b - root) / (2 * a);
-            if (!(t > ray.start && t < ray.end)) {
-                t = (-b + root) / (2 * a);
-                if (!(t > ray.start && t < ray.end)) {
-                    return false;
-                }
-            }
-            Vec3 p = ray.pointAt(t);
-            out.t = t;
-            out.location = p;
-            out.normal = p.minus(c).times(1 / radius);
-            out.surface = sphere;
-            return true;
-        }
-    }
-
-    /** A triangle hit by Möller–Trumbore ("Fast, Minimum Storage Ray/Triangle Intersection", 1997). */
-    static final class MollerTrumbore extends Surface {
-        private final Triangle triangle;
-
-        MollerTrumbore(Triangle triangle) {
-            this.triangle = triangle;
-        }
-
-        @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
-            Vec3 v0 = triangle.getV0();
-            Vec3 e1 = triangle.getV1().minus(v0);
-            Vec3 e2 = triangle.getV2().minus(v0);
-            Vec3 pvec = ray.direction.cross(e2);
-            double det = e1.dot(pvec);
-            if (det == 0) {
-                return false;
-            }
-            double inv = 1 / det;
-            Vec3 tvec = ray.origin.minus(v0);
-            double beta = tvec.dot(pvec) * inv;
-            if (beta < 0 || beta > 1) {
-                return false;
-            }
-            Vec3 qvec = tvec.cross(e1);
-            double gamma = ray.direction.dot(qvec) * inv;
-            if (gamma < 0 || beta + gamma > 1) {
-                return false;
-            }
-            double t = e2.dot(qvec) * inv;
-            if (!(t > ray.start && t < ray.end)) {
-                return false;
-            }
-            out.t = t;
-            out.location = ray.pointAt(t);
-            out.normal = triangle.normalAt(beta, gamma);
-            out.surface = triangle;
-            out.beta = beta;
-            out.gamma = gamma;
-            return true;
         }
     }
 }

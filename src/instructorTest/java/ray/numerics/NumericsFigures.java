@@ -10,7 +10,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Function;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
@@ -23,9 +22,7 @@ import ray.scene.Scene;
 import ray.scene.SceneLoader;
 import ray.shading.Lambertian;
 import ray.shading.Light;
-import ray.shading.Shader;
 import ray.shading.Tracer;
-import ray.surface.Group;
 import ray.surface.Mesh;
 import ray.surface.Sphere;
 import ray.surface.Surface;
@@ -90,8 +87,8 @@ public final class NumericsFigures {
     static void cracks(Path folder) throws IOException {
         Scene scene = SceneLoader.load(Path.of("scenes", "hard", "inside-closed-mesh.xml"));
         Surface robust = scene.getSurfaces();
-        List<Surface> roots = List.of(withTriangles(robust, TextbookTriangles.MOLLER_TRUMBORE),
-                withTriangles(robust, TextbookTriangles.CRAMER), robust);
+        List<Surface> roots = List.of(TextbookSurfaces.withTriangles(robust, TextbookTriangles.MOLLER_TRUMBORE),
+                TextbookSurfaces.withTriangles(robust, TextbookTriangles.CRAMER), robust);
         String[] names = {"Möller–Trumbore", "Cramer's rule", "watertight"};
         Camera camera = scene.getCamera();
         int size = scene.getWidth();
@@ -361,7 +358,7 @@ public final class NumericsFigures {
         for (double distance : new double[] {1e6, 1e7, 1e8}) {
             Scene scene = farSphereScene(distance);
             Surface robust = scene.getSurfaces();
-            Surface textbook = withTextbookSpheres(robust);
+            Surface textbook = TextbookSurfaces.withTextbookSpheres(robust);
             BufferedImage robustPicture = render(scene, Reintersection.FRAMEWORK);
             BufferedImage textbookPicture = picture(scene, textbook, scene.getCamera(), WIDTH, HEIGHT, Reintersection.FRAMEWORK);
             int textbookWrong = wrongHits(scene, textbook);
@@ -462,84 +459,5 @@ public final class NumericsFigures {
     private static Vec3 trace(Scene scene, Surface root, Ray ray, int depth, Tracer tracer) {
         IntersectionRecord hit = new IntersectionRecord();
         return root.intersect(hit, ray) ? hit.surface.getShader().shade(hit, ray, tracer, depth) : scene.getBackColor();
-    }
-
-    // ---------------------------------------------------------------- textbook surfaces
-
-    /** A copy of the surface tree whose triangles intersect by {@code method}; groups and transforms kept. */
-    static Surface withTriangles(Surface surface, TextbookTriangles.Method method) {
-        return replaceLeaves(surface, leaf -> leaf instanceof Triangle ? new TriangleBy((Triangle) leaf, method) : leaf);
-    }
-
-    /** A copy of the surface tree whose spheres intersect by the textbook formula ({@link TextbookSphere}). */
-    static Surface withTextbookSpheres(Surface surface) {
-        return replaceLeaves(surface, leaf -> leaf instanceof Sphere ? new TextbookSphereOf((Sphere) leaf) : leaf);
-    }
-
-    private static Surface replaceLeaves(Surface surface, Function<Surface, Surface> leaf) {
-        if (surface instanceof Transformed) {
-            Transformed t = (Transformed) surface;
-            return new Transformed(replaceLeaves(t.children().get(0), leaf), t.toWorld());
-        }
-        if (surface instanceof Group) {
-            // Any group (a mesh, a box): its children in a plain group. A group's own transform is
-            // not in the group but in the Transformed around it, which is kept above.
-            Group copy = new Group();
-            for (Surface child : surface.children()) {
-                copy.addSurface(replaceLeaves(child, leaf));
-            }
-            return copy;
-        }
-        return leaf.apply(surface);
-    }
-
-    /** A triangle tested by another method; the hit names the triangle itself, so its shader and offsets apply. */
-    private static final class TriangleBy extends Surface {
-        private final Triangle triangle;
-        private final TextbookTriangles.Method method;
-
-        TriangleBy(Triangle triangle, TextbookTriangles.Method method) {
-            this.triangle = triangle;
-            this.method = method;
-        }
-
-        @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
-            return method.intersect(triangle, out, ray);
-        }
-
-        @Override
-        public Shader getShader() {
-            return triangle.getShader();
-        }
-    }
-
-    /**
-     * A sphere tested by the textbook formula (t, location and normal as a student's first Task 2
-     * gives them); the hit names the sphere itself, so that its shader applies and the framework makes
-     * its offsets from the sphere's own numbers, as it does for a student's code.
-     */
-    private static final class TextbookSphereOf extends Surface {
-        private final Sphere sphere;
-        private final TextbookSphere textbook;
-
-        TextbookSphereOf(Sphere sphere) {
-            this.sphere = sphere;
-            this.textbook = new TextbookSphere(sphere.getCenter(), sphere.getRadius());
-        }
-
-        @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
-            if (!textbook.intersect(out, ray)) {
-                return false;
-            }
-            out.surface = sphere;
-            return true;
-        }
-
-        @Override
-        public Shader getShader() {
-            return sphere.getShader();
-        }
     }
 }

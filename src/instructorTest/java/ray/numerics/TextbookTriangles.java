@@ -16,23 +16,23 @@ import ray.surface.Triangle;
  * common "parallel ray" guard) also throws away every small triangle, since det scales with the
  * triangle's area times |d|.
  */
-final class TextbookTriangles {
+public final class TextbookTriangles {
     /** The absolute determinant threshold that textbooks and tutorials often use. */
     static final double TEXTBOOK_EPSILON = 1e-8;
 
     /** One ray–triangle test: fills out (t, location, normal, surface, β, γ) on a hit, as Surface.intersect does. */
-    interface Method {
+    public interface Method {
         boolean intersect(Triangle triangle, IntersectionRecord out, Ray ray);
     }
 
     /** The solution's watertight test (Woop, Benthin and Wald 2013). */
     static final Method ROBUST = (triangle, out, ray) -> triangle.intersect(out, ray);
     /** Möller–Trumbore with det == 0 as the only parallel test. */
-    static final Method MOLLER_TRUMBORE = (triangle, out, ray) -> mollerTrumbore(triangle, out, ray, 0);
+    public static final Method MOLLER_TRUMBORE = (triangle, out, ray) -> mollerTrumbore(triangle, out, ray, 0);
     /** Möller–Trumbore with the textbook early-out |det| &lt; 1e-8. */
     static final Method MOLLER_TRUMBORE_EPSILON = (triangle, out, ray) -> mollerTrumbore(triangle, out, ray, TEXTBOOK_EPSILON);
     /** Cramer's rule on the 3×3 system (Shirley and Marschner, Fundamentals of Computer Graphics §4.4.2). */
-    static final Method CRAMER = TextbookTriangles::cramer;
+    public static final Method CRAMER = TextbookTriangles::cramer;
 
     private TextbookTriangles() {
     }

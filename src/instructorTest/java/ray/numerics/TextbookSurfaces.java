@@ -1,0 +1,109 @@
+package ray.numerics;
+
+import java.util.function.Function;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.shading.Shader;
+import ray.surface.Group;
+import ray.surface.Sphere;
+import ray.surface.Surface;
+import ray.surface.Transformed;
+import ray.surface.Triangle;
+
+/**
+ * Scenes whose spheres or triangles intersect by a textbook method ({@link TextbookSphere},
+ * {@link TextbookTriangles}) instead of the solution's, for the figures and the tolerance survey.
+ * Each textbook hit names the original primitive as the surface hit, as a student's code does, so
+ * the original shader shades it and the framework makes its offsets from the primitive's own numbers.
+ */
+public final class TextbookSurfaces {
+    private TextbookSurfaces() {
+    }
+
+    /** A copy of the surface tree whose triangles intersect by {@code method}; groups and transforms kept. */
+    public static Surface withTriangles(Surface surface, TextbookTriangles.Method method) {
+        return replaceLeaves(surface, leaf -> leaf instanceof Triangle ? triangle((Triangle) leaf, method) : leaf);
+    }
+
+    /** A copy of the surface tree whose spheres intersect by the textbook formula ({@link TextbookSphere}). */
+    public static Surface withTextbookSpheres(Surface surface) {
+        return replaceLeaves(surface, leaf -> leaf instanceof Sphere ? sphere((Sphere) leaf) : leaf);
+    }
+
+    /** {@code triangle} tested by {@code method}; the hit names the triangle, so its shader and offsets apply. */
+    public static Surface triangle(Triangle triangle, TextbookTriangles.Method method) {
+        return new TriangleBy(triangle, method);
+    }
+
+    /** {@code sphere} tested by the textbook formula; the hit names the sphere, so its shader and offsets apply. */
+    public static Surface sphere(Sphere sphere) {
+        return new TextbookSphereOf(sphere);
+    }
+
+    private static Surface replaceLeaves(Surface surface, Function<Surface, Surface> leaf) {
+        if (surface instanceof Transformed) {
+            Transformed t = (Transformed) surface;
+            return new Transformed(replaceLeaves(t.children().get(0), leaf), t.toWorld());
+        }
+        if (surface instanceof Group) {
+            // Any group (a mesh, a box): its children in a plain group. A group's own transform is
+            // not in the group but in the Transformed around it, which is kept above.
+            Group copy = new Group();
+            for (Surface child : surface.children()) {
+                copy.addSurface(replaceLeaves(child, leaf));
+            }
+            return copy;
+        }
+        return leaf.apply(surface);
+    }
+
+    /** A triangle tested by another method; the hit names the triangle itself, so its shader and offsets apply. */
+    private static final class TriangleBy extends Surface {
+        private final Triangle triangle;
+        private final TextbookTriangles.Method method;
+
+        TriangleBy(Triangle triangle, TextbookTriangles.Method method) {
+            this.triangle = triangle;
+            this.method = method;
+        }
+
+        @Override
+        public boolean intersect(IntersectionRecord out, Ray ray) {
+            return method.intersect(triangle, out, ray);
+        }
+
+        @Override
+        public Shader getShader() {
+            return triangle.getShader();
+        }
+    }
+
+    /**
+     * A sphere tested by the textbook formula (t, location and normal as a student's first Task 2
+     * gives them); the hit names the sphere itself, so that its shader applies and the framework makes
+     * its offsets from the sphere's own numbers, as it does for a student's code.
+     */
+    private static final class TextbookSphereOf extends Surface {
+        private final Sphere sphere;
+        private final TextbookSphere textbook;
+
+        TextbookSphereOf(Sphere sphere) {
+            this.sphere = sphere;
+            this.textbook = new TextbookSphere(sphere.getCenter(), sphere.getRadius());
+        }
+
+        @Override
+        public boolean intersect(IntersectionRecord out, Ray ray) {
+            if (!textbook.intersect(out, ray)) {
+                return false;
+            }
+            out.surface = sphere;
+            return true;
+        }
+
+        @Override
+        public Shader getShader() {
+            return sphere.getShader();
+        }
+    }
+}
