@@ -9,6 +9,8 @@ import com.google.gson.JsonParser;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.regex.Pattern;
 import org.junit.Before;
 import org.junit.Rule;
@@ -16,7 +18,7 @@ import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import ray.image.PngReader;
 
-/** {@code ray1 render} on good scenes: the PNGs it writes, the summary lines and the --stats JSON. */
+/** {@code ray1 render} on good scenes: the PNGs it writes, the summary and plan lines and the --stats JSON. */
 public class RenderCommandTest {
     @Rule
     public TemporaryFolder folder = new TemporaryFolder();
@@ -36,6 +38,10 @@ public class RenderCommandTest {
                 + " rays \\(camera " + camera + ", shadow " + shadow + ", reflection 0\\)");
     }
 
+    /** The plan line of the floor scene (one white Lambertian triangle, one light), at 1 sample. */
+    private static final String FLOOR_PLAN = "effects: lighting(1 shader) shadows(1 light);"
+            + " skipped: specular, reflection, antialiasing, transforms, vertex normals";
+
     @Test
     public void renderingOneSceneWritesItsPngAndOneSummaryLine() throws Exception {
         Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
@@ -44,8 +50,9 @@ public class RenderCommandTest {
         assertEquals(run.toString(), 0, run.status);
         assertEquals(run.toString(), "", run.err);
         String[] lines = CliRun.lines(run.out);
-        assertEquals(run.toString(), 1, lines.length);
+        assertEquals(run.toString(), 2, lines.length);
         assertTrue(lines[0], summary("floor", 16, 16).matcher(lines[0].strip()).matches());
+        assertEquals("  " + FLOOR_PLAN, lines[1]);
 
         BufferedImage png = PngReader.read(output.resolve("floor.png"));
         assertEquals(4, png.getWidth());
@@ -67,9 +74,11 @@ public class RenderCommandTest {
 
         assertEquals(run.toString(), 0, run.status);
         String[] lines = CliRun.lines(run.out);
-        assertEquals(run.toString(), 2, lines.length);
+        assertEquals(run.toString(), 4, lines.length);
         assertTrue(lines[0], summary("a", 16, 16).matcher(lines[0].strip()).matches());
-        assertTrue(lines[1], summary("b", 16, 16).matcher(lines[1].strip()).matches());
+        assertEquals("  " + FLOOR_PLAN, lines[1]);
+        assertTrue(lines[2], summary("b", 16, 16).matcher(lines[2].strip()).matches());
+        assertEquals("  " + FLOOR_PLAN, lines[3]);
         assertTrue(Files.isRegularFile(output.resolve("a.png")));
         assertTrue(Files.isRegularFile(output.resolve("b.png")));
         try (var files = Files.list(output)) {
@@ -84,11 +93,15 @@ public class RenderCommandTest {
         CliRun asWritten = CliRun.of("render", "-o", output.toString(), scene.toString());
         assertEquals(asWritten.toString(), 0, asWritten.status);
         // 3×3 grid: 9·16 = 144 camera rays, each with one shadow ray
-        assertTrue(asWritten.out, summary("nine", 144, 144).matcher(asWritten.out.strip()).matches());
+        String[] written = CliRun.lines(asWritten.out);
+        assertTrue(asWritten.out, summary("nine", 144, 144).matcher(written[0].strip()).matches());
+        assertTrue(written[1], written[1].contains(" antialiasing(3x3);"));
 
         CliRun overridden = CliRun.of("render", "--samples", "4", "-o", output.toString(), scene.toString());
         assertEquals(overridden.toString(), 0, overridden.status);
-        assertTrue(overridden.out, summary("nine", 64, 64).matcher(overridden.out.strip()).matches());
+        String[] over = CliRun.lines(overridden.out);
+        assertTrue(overridden.out, summary("nine", 64, 64).matcher(over[0].strip()).matches());
+        assertTrue("the plan follows --samples: " + over[1], over[1].contains(" antialiasing(2x2);"));
     }
 
     @Test
@@ -117,6 +130,16 @@ public class RenderCommandTest {
             assertEquals(16 * samples[k], rays.get("camera").getAsLong());
             assertEquals(16 * samples[k], rays.get("shadow").getAsLong());
             assertEquals(0, rays.get("reflection").getAsLong());
+            List<String> effects = new ArrayList<>();
+            s.get("effects").getAsJsonArray().forEach(e -> effects.add(e.getAsString()));
+            List<String> skipped = new ArrayList<>();
+            s.get("skipped").getAsJsonArray().forEach(e -> skipped.add(e.getAsString()));
+            assertEquals(samples[k] == 1 ? List.of("lighting(1 shader)", "shadows(1 light)")
+                    : List.of("lighting(1 shader)", "shadows(1 light)", "antialiasing(2x2)"), effects);
+            assertTrue(skipped.containsAll(List.of("specular", "reflection", "transforms", "vertex normals")));
+            // One triangle: every camera and shadow ray is one intersection test.
+            assertEquals(32 * samples[k], s.get("intersectionTests").getAsLong());
+            assertEquals("Lambertian only", 0, s.get("specularEvaluations").getAsLong());
         }
         try (var files = Files.list(stats.getParent())) {
             assertEquals("no temporary file is left beside the stats", 1, files.count());

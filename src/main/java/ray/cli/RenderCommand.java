@@ -20,7 +20,7 @@ import ray.scene.Scene;
 import ray.scene.SceneException;
 import ray.scene.SceneLoader;
 
-/** {@code ray1 render}: renders scenes to PNG files, one line of figures per scene. */
+/** {@code ray1 render}: renders scenes to PNG files, per scene a line of figures and a line of its render plan. */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Renders each scene (a folder means every *.xml in it, recursively) to DIR/<scene-name>.png.")
 public final class RenderCommand implements Callable<Integer> {
@@ -90,6 +90,7 @@ public final class RenderCommand implements Callable<Integer> {
                 SceneStats s = SceneStats.of(name, scene, result);
                 stats.add(s);
                 out.println(s.summaryLine());
+                out.println(s.planLine());
             } catch (SceneException e) {
                 err.println("error: " + e.getMessage());
                 failures++;

@@ -18,7 +18,13 @@ final class SceneStats {
     int samples;
     int threads;
     double seconds;
+    List<String> effects;
+    List<String> skipped;
     Map<String, Long> rays;
+    long intersectionTests;
+    long specularEvaluations;
+    /** The plan line, printed under the summary; not in the JSON (effects and skipped hold it). */
+    transient String planLine;
 
     static SceneStats of(String name, Scene scene, RenderResult result) {
         SceneStats s = new SceneStats();
@@ -28,7 +34,12 @@ final class SceneStats {
         s.samples = result.samplesPerPixel;
         s.threads = result.threads;
         s.seconds = result.seconds;
+        s.effects = result.plan.effects();
+        s.skipped = result.plan.skipped();
         s.rays = result.rays.byKind();
+        s.intersectionTests = result.rays.intersectionTests;
+        s.specularEvaluations = result.rays.specular;
+        s.planLine = result.plan.describe();
         return s;
     }
 
@@ -37,6 +48,11 @@ final class SceneStats {
         StringBuilder kinds = new StringBuilder();
         rays.forEach((kind, count) -> kinds.append(kinds.length() == 0 ? "" : ", ").append(kind).append(' ').append(count));
         return String.format(java.util.Locale.ROOT, "%-24s %5dx%-5d %7.2f s  %,12d rays (%s)", scene, width, height, seconds, total, kinds);
+    }
+
+    /** The line under the summary: which effects ran and which were skipped, indented. */
+    String planLine() {
+        return "  " + planLine;
     }
 
     static void writeJson(List<SceneStats> stats, Path file) throws IOException {

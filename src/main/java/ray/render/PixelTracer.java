@@ -13,16 +13,26 @@ import ray.surface.Surface;
 final class PixelTracer implements Tracer {
     private final Scene scene;
     private final Surface surfaces;
+    private final long primitives;
+    private final boolean skipsZeroWork;
     private final RayStats stats = new RayStats();
     /** Scratch record for shadow tests, whose hit is never read. */
     private final IntersectionRecord shadowHit = new IntersectionRecord();
 
-    PixelTracer(Scene scene) {
-        this.scene = scene;
+    /** @param skipsZeroWork false only for the test mode that traces every shadow and reflection ray */
+    PixelTracer(RenderPlan plan, boolean skipsZeroWork) {
+        this.scene = plan.scene();
         this.surfaces = scene.getSurfaces();
+        this.primitives = plan.primitives();
+        this.skipsZeroWork = skipsZeroWork;
     }
 
+    /**
+     * The counts so far. Intersection tests are not counted per ray: the linear closest-hit loop
+     * tests every ray against each of the plan's primitives, so they are exactly rays × primitives.
+     */
     RayStats stats() {
+        stats.intersectionTests = stats.total() * primitives;
         return stats;
     }
 
@@ -49,6 +59,16 @@ final class PixelTracer implements Tracer {
     public boolean unoccluded(IntersectionRecord hit, Vec3 lightPosition) {
         stats.shadow++;
         return !surfaces.intersect(shadowHit, SecondaryRays.shadowRay(hit, lightPosition));
+    }
+
+    @Override
+    public void specularEvaluated() {
+        stats.specular++;
+    }
+
+    @Override
+    public boolean skipsZeroWork() {
+        return skipsZeroWork;
     }
 
     @Override

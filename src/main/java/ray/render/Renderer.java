@@ -13,23 +13,60 @@ import ray.scene.Scene;
  * samples per pixel, at image point ((i + (a + ½)/n)/nx, (j + (b + ½)/n)/ny), and the samples are
  * averaged. Threads pull whole rows from a shared counter; every pixel is computed the same way
  * whichever thread takes it, so the image is identical for any thread count.
+ *
+ * <p>It runs a {@link RenderPlan}: the grid side and the primitive count come from the plan, and
+ * effects the scene does not call for cost nothing, since nothing in the loop asks for them (no
+ * lights means shaders loop over none, no Glazed shader means no reflection ray, one sample means
+ * one camera ray per pixel).
  */
 public final class Renderer {
+    private final RenderPlan plan;
     private final Scene scene;
-    private final int samplesPerPixel;
     private final int threads;
+    /** False only in the test mode that traces every shadow and reflection ray (see {@link #doingAllWork}). */
+    private final boolean skipsZeroWork;
 
     /**
      * @param samplesPerPixel N, or 0 for the scene's own {@code <samples>}
      * @param threads         worker threads, or 0 for one per available core
      */
     public Renderer(Scene scene, int samplesPerPixel, int threads) {
-        if (samplesPerPixel < 0 || threads < 0) {
-            throw new IllegalArgumentException("samples and threads must be ≥ 0");
+        this(checkedPlan(scene, samplesPerPixel), threads);
+    }
+
+    /** @param threads worker threads, or 0 for one per available core */
+    public Renderer(RenderPlan plan, int threads) {
+        this(plan, threads, true);
+    }
+
+    private Renderer(RenderPlan plan, int threads, boolean skipsZeroWork) {
+        if (threads < 0) {
+            throw new IllegalArgumentException("threads must be ≥ 0 (0 for one per core), got " + threads);
         }
-        this.scene = scene;
-        this.samplesPerPixel = samplesPerPixel > 0 ? samplesPerPixel : scene.getSamples();
+        this.plan = plan;
+        this.scene = plan.scene();
         this.threads = threads > 0 ? threads : Runtime.getRuntime().availableProcessors();
+        this.skipsZeroWork = skipsZeroWork;
+    }
+
+    private static RenderPlan checkedPlan(Scene scene, int samplesPerPixel) {
+        if (samplesPerPixel < 0) {
+            throw new IllegalArgumentException("samples must be ≥ 0 (0 for the scene's own), got " + samplesPerPixel);
+        }
+        return RenderPlan.of(scene, samplesPerPixel);
+    }
+
+    /**
+     * A renderer for tests that does the work the normal one skips: a shadow ray for every light even
+     * when its contribution is zero, a reflection ray even when the reflectance is zero. Its image
+     * must equal the normal one bit for bit; only its counts differ.
+     */
+    static Renderer doingAllWork(RenderPlan plan, int threads) {
+        return new Renderer(plan, threads, false);
+    }
+
+    public RenderPlan plan() {
+        return plan;
     }
 
     /** n, the side of the per-pixel sample grid: round(√N), at least 1. */
@@ -48,7 +85,7 @@ public final class Renderer {
         List<Throwable> failures = new ArrayList<>();
         int workerCount = Math.min(threads, height);
         for (int k = 0; k < workerCount; k++) {
-            PixelTracer tracer = new PixelTracer(scene);
+            PixelTracer tracer = new PixelTracer(plan, skipsZeroWork);
             tracers.add(tracer);
             Thread worker = new Thread(() -> {
                 for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
@@ -82,15 +119,15 @@ public final class Renderer {
         }
         RayStats total = new RayStats();
         tracers.forEach(t -> total.add(t.stats()));
-        int n = gridSide(samplesPerPixel);
-        return new RenderResult(image, total, n * n, workerCount, (System.nanoTime() - startNanos) / 1e9);
+        int n = plan.gridSide();
+        return new RenderResult(image, plan, total, n * n, workerCount, (System.nanoTime() - startNanos) / 1e9);
     }
 
     private void renderRow(PixelTracer tracer, Image image, int j) {
         Camera camera = scene.getCamera();
         int width = scene.getWidth();
         int height = scene.getHeight();
-        int n = gridSide(samplesPerPixel);
+        int n = plan.gridSide();
         double weight = 1.0 / (n * n);
         for (int i = 0; i < width; i++) {
             double r = 0, g = 0, b = 0;

@@ -14,6 +14,10 @@ public abstract class DirectLighting extends Shader {
     /** The light-independent factor f(n, l, e) that multiplies I/r²; zero means the light cannot add anything. */
     protected abstract Vec3 reflectance(Vec3 normal, Vec3 toLight, Vec3 toEye);
 
+    /** Called once per light after {@link #reflectance} has been evaluated for it; reports the work to the tracer. */
+    protected void evaluated(Tracer tracer) {
+    }
+
     @Override
     public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
         Vec3 toEye = towardEye(ray);
@@ -22,8 +26,9 @@ public abstract class DirectLighting extends Shader {
             Vec3 toLightVector = light.getPosition().minus(hit.location);
             double distanceSquared = toLightVector.lengthSquared();
             Vec3 f = reflectance(hit.normal, toLightVector.normalized(), toEye);
+            evaluated(tracer);
             // A light whose unshadowed contribution is zero costs no shadow ray.
-            if (f.x == 0 && f.y == 0 && f.z == 0 || !tracer.unoccluded(hit, light.getPosition())) {
+            if (f.x == 0 && f.y == 0 && f.z == 0 && tracer.skipsZeroWork() || !tracer.unoccluded(hit, light.getPosition())) {
                 continue;
             }
             Vec3 intensity = light.getIntensity();

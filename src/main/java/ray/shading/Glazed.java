@@ -49,7 +49,8 @@ public class Glazed extends Shader {
         double cosTheta = hit.normal.dot(toEye);
         double r = reflectance(cosTheta);
         Vec3 base = substrate.shade(hit, ray, tracer, depth).times(1 - r);
-        if (depth + 1 > MAX_DEPTH || r == 0) {
+        // At the depth cap the glaze reflects black; a zero reflectance needs no ray (unless the tracer asks for all work).
+        if (depth + 1 > MAX_DEPTH || r == 0 && tracer.skipsZeroWork()) {
             return base;
         }
         // Mirror direction: the eye direction reflected about the normal, 2(n·e)n − e.

@@ -38,6 +38,12 @@ public class Phong extends DirectLighting {
         return exponent;
     }
 
+    /** Each light's reflectance includes one specular term. */
+    @Override
+    protected void evaluated(Tracer tracer) {
+        tracer.specularEvaluated();
+    }
+
     @Override
     protected Vec3 reflectance(Vec3 normal, Vec3 toLight, Vec3 toEye) {
         Vec3 half = toLight.plus(toEye).normalized();

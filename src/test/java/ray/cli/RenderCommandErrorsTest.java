@@ -48,7 +48,8 @@ public class RenderCommandErrorsTest {
         assertTrue(Files.isRegularFile(output.resolve("a-good.png")));
         assertTrue(Files.isRegularFile(output.resolve("c-good.png")));
         assertFalse("no PNG for the broken scene", Files.exists(output.resolve("b-broken.png")));
-        assertEquals(run.toString(), 2, CliRun.lines(run.out).length);
+        // A summary line and a plan line per scene that rendered.
+        assertEquals(run.toString(), 4, CliRun.lines(run.out).length);
 
         String[] errors = CliRun.lines(run.err);
         assertEquals(run.toString(), 1, count(errors, "error: "));
@@ -148,7 +149,8 @@ public class RenderCommandErrorsTest {
         Path second = CliRun.write(root.resolve("two/same.xml"), CliRun.floorScene(""));
         CliRun run = CliRun.of("render", "-o", output.toString(), first.toString(), second.toString());
         assertNotEquals(run.toString(), 0, run.status);
-        assertEquals(run.toString(), 1, CliRun.lines(run.out).length);
+        // One scene rendered: its summary line and its plan line.
+        assertEquals(run.toString(), 2, CliRun.lines(run.out).length);
         String[] errors = CliRun.lines(run.err);
         assertEquals(run.toString(), 1, count(errors, "error: "));
         assertTrue(run.toString(), errors[0].startsWith("error: " + second));

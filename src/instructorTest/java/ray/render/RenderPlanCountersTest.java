@@ -1,0 +1,232 @@
+package ray.render;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+import static ray.testing.Asserts.v;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import org.junit.Test;
+import ray.image.Image;
+import ray.math.Vec3;
+import ray.render.RenderPlan.Effect;
+import ray.scene.Scene;
+import ray.scene.SceneLoader;
+import ray.shading.Glazed;
+import ray.shading.Lambertian;
+import ray.shading.Light;
+import ray.shading.Phong;
+import ray.shading.RGBNormals;
+import ray.shading.Shader;
+
+/**
+ * The render plan proved by the counters: an effect the plan skips costs no ray and no evaluation
+ * (no lights → no shadow rays, Lambertian only → no specular term, no Glazed → no reflection ray),
+ * N samples trace exactly n²·W·H camera rays, intersection tests are rays × primitives, every
+ * shipped scene's plan is what its file holds, and skipping zero-contribution work leaves the image
+ * bit for bit the same as a render that does all of it. Instructor-only: it needs hits, so working
+ * camera, sphere, triangle and group code.
+ */
+public class RenderPlanCountersTest {
+
+    /** A 5×3 orthographic view straight down onto a plane at z = 0 that fills it: every camera ray hits. */
+    private static Scene floorScene(Shader shader) {
+        Scene scene = TestScenes.scene(TestScenes.orthographicDown(v(0, 0, 5), 5, 3), 5, 3);
+        scene.addSurface(TestScenes.plane(0, true, shader));
+        return scene;
+    }
+
+    @Test
+    public void noLightsTraceNoShadowRaysAndRunNoLighting() {
+        Scene scene = floorScene(new Phong());
+        scene.complete();
+        RenderResult result = new Renderer(scene, 1, 2).render();
+        assertTrue(result.plan.skipped().containsAll(List.of("lighting", "shadows")));
+        assertEquals(15, result.rays.camera);
+        assertEquals(0, result.rays.shadow);
+        assertEquals("no light, no specular term to evaluate", 0, result.rays.specular);
+    }
+
+    @Test
+    public void lambertianOnlyEvaluatesNoSpecularTerm() {
+        Scene scene = floorScene(new Lambertian());
+        scene.addLight(new Light(v(0, 0, 3), Vec3.ONE));
+        scene.addLight(new Light(v(2, 0, 3), Vec3.ONE));
+        scene.complete();
+        RenderResult result = new Renderer(scene, 1, 2).render();
+        assertEquals(0, result.rays.specular);
+        // Both lights are above the floor, so each of the 15 hits traces 2 shadow rays.
+        assertEquals(30, result.rays.shadow);
+    }
+
+    @Test
+    public void phongEvaluatesOneSpecularTermPerLightPerHit() {
+        Scene scene = floorScene(new Phong());
+        scene.addLight(new Light(v(0, 0, 3), Vec3.ONE));
+        scene.addLight(new Light(v(2, 0, 3), Vec3.ONE));
+        scene.complete();
+        RenderResult result = new Renderer(scene, 4, 2).render();
+        // 2×2 grid: 4·15 = 60 hits, 2 lights each.
+        assertEquals(120, result.rays.specular);
+    }
+
+    @Test
+    public void noGlazedShaderTracesNoReflectionRays() {
+        Scene scene = floorScene(new Phong());
+        scene.addLight(new Light(v(0, 0, 3), Vec3.ONE));
+        scene.complete();
+        RenderResult result = new Renderer(scene, 1, 1).render();
+        assertTrue(result.plan.skipped().contains("reflection"));
+        assertEquals(0, result.rays.reflection);
+    }
+
+    @Test
+    public void nSamplesTraceExactlyGridSquaredTimesPixelsCameraRays() {
+        Scene scene = floorScene(new Lambertian());
+        scene.complete();
+        int[] samples = {1, 2, 3, 4, 7, 9, 16};
+        int[] side = {1, 1, 2, 2, 3, 3, 4}; // round(√N)
+        for (int k = 0; k < samples.length; k++) {
+            RenderResult result = new Renderer(scene, samples[k], 3).render();
+            assertEquals("N = " + samples[k], (long) side[k] * side[k] * 5 * 3, result.rays.camera);
+            assertEquals(side[k] > 1, result.plan.runs(Effect.ANTIALIASING));
+        }
+    }
+
+    @Test
+    public void intersectionTestsAreRaysTimesPrimitives() {
+        Scene scene = floorScene(new Lambertian());
+        // Two more triangles far off to the side: hit by nothing, tested by every ray.
+        scene.addSurface(TestScenes.plane(-100, true, new Lambertian()));
+        scene.addSurface(TestScenes.plane(-200, true, new Lambertian()));
+        scene.addLight(new Light(v(0, 0, 3), Vec3.ONE));
+        scene.complete();
+        RenderResult result = new Renderer(scene, 1, 2).render();
+        assertEquals(3, result.plan.primitives());
+        // 15 camera rays + 15 shadow rays, each tested against 3 triangles.
+        assertEquals(15, result.rays.shadow);
+        assertEquals(90, result.rays.intersectionTests);
+    }
+
+    /** The effects each shipped scene's file calls for (from its lights, shaders, samples, groups and meshes). */
+    private static final Map<String, Set<Effect>> SHIPPED = new TreeMap<>(Map.ofEntries(
+            Map.entry("antialiased", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.ANTIALIASING, Effect.TRANSFORMS)),
+            Map.entry("glazed-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION, Effect.TRANSFORMS)),
+            Map.entry("group-transforms", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
+            Map.entry("mesh-flat", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS)),
+            Map.entry("mesh-smooth", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
+            Map.entry("one-sphere-phong", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("one-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS)),
+            Map.entry("rgb-normals", Set.of()),
+            Map.entry("two-boxes", Set.of(Effect.LIGHTING, Effect.SHADOWS)),
+            Map.entry("wire-box-ortho", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("wire-box", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("far-from-origin", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION, Effect.TRANSFORMS)),
+            Map.entry("far-tiny-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("huge-ground-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("inside-closed-mesh", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.TRANSFORMS))));
+
+    private static List<Path> shippedScenes() throws IOException {
+        try (Stream<Path> walk = Files.walk(Path.of("scenes"))) {
+            return walk.filter(p -> p.toString().endsWith(".xml")).sorted().collect(Collectors.toList());
+        }
+    }
+
+    private static String nameOf(Path file) {
+        String f = file.getFileName().toString();
+        return f.substring(0, f.length() - ".xml".length());
+    }
+
+    /** The scene at 24×18 pixels (its own samples), so that every shipped scene renders in a blink. */
+    private static Scene loadSmall(Path file) {
+        Scene scene = SceneLoader.load(file);
+        scene.setImage(24, 18);
+        return scene;
+    }
+
+    @Test
+    public void everyShippedScenePlansWhatItsFileHoldsAndTheCountersAgree() throws IOException {
+        List<Path> files = shippedScenes();
+        assertEquals("a new shipped scene needs its row in SHIPPED", SHIPPED.keySet(),
+                files.stream().map(RenderPlanCountersTest::nameOf).collect(Collectors.toCollection(java.util.TreeSet::new)));
+        for (Path file : files) {
+            String name = nameOf(file);
+            Scene scene = loadSmall(file);
+            RenderResult result = new Renderer(scene, 0, 2).render();
+            RenderPlan plan = result.plan;
+            for (Effect effect : Effect.values()) {
+                assertEquals(name + " " + effect, SHIPPED.get(name).contains(effect), plan.runs(effect));
+            }
+            int n = plan.gridSide();
+            assertEquals(name, (long) n * n * 24 * 18, result.rays.camera);
+            // A skipped effect costs nothing; at 24×18 every running one is still exercised.
+            assertEquals(name, plan.runs(Effect.SHADOWS), result.rays.shadow > 0);
+            assertEquals(name, plan.runs(Effect.SPECULAR), result.rays.specular > 0);
+            assertEquals(name, plan.runs(Effect.REFLECTION), result.rays.reflection > 0);
+            assertEquals(name, result.rays.total() * plan.primitives(), result.rays.intersectionTests);
+        }
+    }
+
+    private static void assertSameBits(String what, Image expected, Image actual) {
+        for (int j = 0; j < expected.height(); j++) {
+            for (int i = 0; i < expected.width(); i++) {
+                Vec3 e = expected.get(i, j);
+                Vec3 a = actual.get(i, j);
+                String at = what + " pixel (" + i + ", " + j + ")";
+                assertEquals(at, Double.doubleToRawLongBits(e.x), Double.doubleToRawLongBits(a.x));
+                assertEquals(at, Double.doubleToRawLongBits(e.y), Double.doubleToRawLongBits(a.y));
+                assertEquals(at, Double.doubleToRawLongBits(e.z), Double.doubleToRawLongBits(a.z));
+            }
+        }
+    }
+
+    @Test
+    public void skippingZeroWorkLeavesTheImageBitForBitAndSavesTheRays() {
+        // A glaze of index 1 has R0 = 0, and seen straight down (cos θ = 1) R = 0: no reflection ray is
+        // needed. A light under the floor adds nothing (n·l < 0 for Lambertian): no shadow ray is needed.
+        Glazed glazed = new Glazed();
+        glazed.setRefractiveIndex(1);
+        Scene scene = floorScene(glazed);
+        scene.addLight(new Light(v(0, 0, 3), Vec3.ONE));
+        scene.addLight(new Light(v(0, 0, -3), Vec3.ONE));
+        scene.complete();
+        RenderPlan plan = RenderPlan.of(scene);
+        RenderResult skipping = new Renderer(plan, 2).render();
+        RenderResult allWork = Renderer.doingAllWork(plan, 2).render();
+        assertSameBits("floor", skipping.image, allWork.image);
+        assertEquals(15, skipping.rays.shadow);
+        assertEquals(0, skipping.rays.reflection);
+        // All the work: both lights at each of the 15 hits, and one reflection ray (to the background) per hit.
+        assertEquals(30, allWork.rays.shadow);
+        assertEquals(15, allWork.rays.reflection);
+    }
+
+    @Test
+    public void everyShippedSceneRendersTheSameWithoutSkipping() throws IOException {
+        for (Path file : shippedScenes()) {
+            RenderPlan plan = RenderPlan.of(loadSmall(file));
+            RenderResult skipping = new Renderer(plan, 2).render();
+            RenderResult allWork = Renderer.doingAllWork(plan, 2).render();
+            assertSameBits(nameOf(file), skipping.image, allWork.image);
+            assertEquals(skipping.rays.camera, allWork.rays.camera);
+            assertTrue(nameOf(file), allWork.rays.shadow >= skipping.rays.shadow);
+        }
+    }
+
+    @Test
+    public void rgbNormalsSceneNeedsNoLightEvenWithLights() {
+        Scene scene = floorScene(new RGBNormals());
+        scene.addLight(new Light(v(0, 0, 3), Vec3.ONE));
+        scene.complete();
+        RenderResult result = new Renderer(scene, 1, 1).render();
+        assertEquals(List.of(), result.plan.effects());
+        assertEquals(0, result.rays.shadow);
+    }
+}

@@ -1,0 +1,202 @@
+package ray.render;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.EnumMap;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import ray.scene.Scene;
+import ray.shading.DirectLighting;
+import ray.shading.Glazed;
+import ray.shading.Phong;
+import ray.shading.Shader;
+import ray.surface.Group;
+import ray.surface.Surface;
+import ray.surface.Transformed;
+import ray.surface.Triangle;
+
+/**
+ * Which effects a render simulates, decided from the scene alone before any ray is traced: a scene
+ * pays only for what it uses. The plan walks the surface tree ({@link Surface#children()}) and every
+ * reachable shader (a {@link Glazed} shader's substrate too), and counts what each effect needs.
+ * The renderer takes its sample grid and the primitive count for the intersection counter from here.
+ */
+public final class RenderPlan {
+
+    /** The effects a scene may call for, in the order they are listed. */
+    public enum Effect {
+        /** Lambertian or Phong shading by point lights: some lit shader and at least one light. */
+        LIGHTING("lighting"),
+        /** One shadow ray per light with a nonzero contribution; same condition as lighting. */
+        SHADOWS("shadows"),
+        /** The Blinn–Phong highlight: some reachable Phong shader (a glaze's substrate counts). */
+        SPECULAR("specular"),
+        /** Mirror rays of Glazed shaders, up to {@link Glazed#MAX_DEPTH} bounces. */
+        REFLECTION("reflection"),
+        /** More than one camera ray per pixel: an n×n grid, n = round(√samples) &gt; 1. */
+        ANTIALIASING("antialiasing"),
+        /** Rays taken into a group's coordinates: some {@link Transformed} in the tree. */
+        TRANSFORMS("transforms"),
+        /** The barycentric blend of a triangle's vertex normals. */
+        VERTEX_NORMALS("vertex normals");
+
+        public final String label;
+
+        Effect(String label) {
+            this.label = label;
+        }
+    }
+
+    private final Scene scene;
+    private final int gridSide;
+    private final long primitives;
+    /** What each running effect counts (lights, shaders, groups, triangles, grid side), in Effect order. */
+    private final Map<Effect, String> running = new EnumMap<>(Effect.class);
+
+    private RenderPlan(Scene scene, int samplesPerPixel) {
+        this.scene = scene;
+        this.gridSide = Renderer.gridSide(samplesPerPixel);
+        Walk walk = new Walk();
+        walk.surface(scene.getSurfaces());
+        this.primitives = walk.primitives;
+        int lights = scene.getLights().size();
+        if (lights > 0 && walk.lit > 0) {
+            running.put(Effect.LIGHTING, count(walk.lit, "shader"));
+            running.put(Effect.SHADOWS, count(lights, "light"));
+        }
+        if (walk.phong > 0) {
+            running.put(Effect.SPECULAR, count(walk.phong, "shader"));
+        }
+        if (walk.glazed > 0) {
+            running.put(Effect.REFLECTION, count(walk.glazed, "shader") + ", depth " + Glazed.MAX_DEPTH);
+        }
+        if (gridSide > 1) {
+            running.put(Effect.ANTIALIASING, gridSide + "x" + gridSide);
+        }
+        if (walk.transforms > 0) {
+            running.put(Effect.TRANSFORMS, count(walk.transforms, "group"));
+        }
+        if (walk.smoothTriangles > 0) {
+            running.put(Effect.VERTEX_NORMALS, count(walk.smoothTriangles, "triangle"));
+        }
+    }
+
+    /** The plan for the scene as written, with its own {@code <samples>}. */
+    public static RenderPlan of(Scene scene) {
+        return new RenderPlan(scene, scene.getSamples());
+    }
+
+    /** The plan for the scene rendered with {@code samplesPerPixel} samples, or its own when 0. */
+    public static RenderPlan of(Scene scene, int samplesPerPixel) {
+        if (samplesPerPixel < 0) {
+            throw new IllegalArgumentException("samples must be ≥ 0, got " + samplesPerPixel);
+        }
+        return new RenderPlan(scene, samplesPerPixel > 0 ? samplesPerPixel : scene.getSamples());
+    }
+
+    public Scene scene() {
+        return scene;
+    }
+
+    public boolean runs(Effect effect) {
+        return running.containsKey(effect);
+    }
+
+    /** n, the side of the per-pixel sample grid; n² camera rays per pixel. */
+    public int gridSide() {
+        return gridSide;
+    }
+
+    /**
+     * The leaves of the surface tree (spheres, triangles, ...; a surface reached twice counts twice).
+     * Every ray is tested against each of them once by the linear closest-hit loop of Group.
+     */
+    public long primitives() {
+        return primitives;
+    }
+
+    /** The effects that run, each with what it counts, e.g. {@code shadows(2 lights)}. */
+    public List<String> effects() {
+        List<String> list = new ArrayList<>();
+        running.forEach((effect, what) -> list.add(effect.label + "(" + what + ")"));
+        return Collections.unmodifiableList(list);
+    }
+
+    /** The effects this scene does not call for, by label. */
+    public List<String> skipped() {
+        List<String> list = new ArrayList<>();
+        for (Effect effect : Effect.values()) {
+            if (!running.containsKey(effect)) {
+                list.add(effect.label);
+            }
+        }
+        return Collections.unmodifiableList(list);
+    }
+
+    /** One line: {@code effects: shadows(2 lights) specular(1 shader); skipped: reflection, antialiasing}. */
+    public String describe() {
+        List<String> effects = effects();
+        List<String> skipped = skipped();
+        return "effects: " + (effects.isEmpty() ? "none" : String.join(" ", effects))
+                + "; skipped: " + (skipped.isEmpty() ? "none" : String.join(", ", skipped));
+    }
+
+    @Override
+    public String toString() {
+        return describe();
+    }
+
+    private static String count(long n, String noun) {
+        return n + " " + noun + (n == 1 ? "" : "s");
+    }
+
+    /** One pass over the surface tree, collecting distinct shaders by identity. */
+    private static final class Walk {
+        final Set<Shader> shaders = Collections.newSetFromMap(new IdentityHashMap<>());
+        long primitives;
+        long transforms;
+        long smoothTriangles;
+        int lit;
+        int phong;
+        int glazed;
+
+        void surface(Surface s) {
+            List<Surface> children = s.children();
+            if (s instanceof Transformed) {
+                transforms++;
+            }
+            if (children.isEmpty()) {
+                // An empty group tests nothing; every other leaf is one primitive.
+                if (!(s instanceof Group)) {
+                    primitives++;
+                    shader(s.getShader());
+                }
+                if (s instanceof Triangle && ((Triangle) s).hasVertexNormals()) {
+                    smoothTriangles++;
+                }
+                return;
+            }
+            for (Surface child : children) {
+                surface(child);
+            }
+        }
+
+        void shader(Shader shader) {
+            if (shader == null || !shaders.add(shader)) {
+                return;
+            }
+            if (shader instanceof DirectLighting) {
+                lit++;
+            }
+            if (shader instanceof Phong) {
+                phong++;
+            }
+            if (shader instanceof Glazed) {
+                glazed++;
+                shader(((Glazed) shader).getSubstrate());
+            }
+        }
+    }
+}
