@@ -85,7 +85,12 @@ public final class RenderCommand implements Callable<Integer> {
             }
             try {
                 Scene scene = SceneLoader.load(file);
-                RenderResult result = new Renderer(scene, samples == null ? 0 : samples, threads == null ? 0 : threads).render();
+                Renderer renderer = new Renderer(scene, samples == null ? 0 : samples, threads == null ? 0 : threads);
+                RenderResult result;
+                // On stderr, and only at a terminal: stdout stays one line per scene for scripts.
+                try (ProgressBar bar = ProgressBar.show(name, renderer::progress, err, System.console() != null)) {
+                    result = renderer.render();
+                }
                 PngWriter.write(result.image, scene.getExposure(), output.resolve(name + ".png"));
                 SceneStats s = SceneStats.of(name, scene, result);
                 stats.add(s);

@@ -25,6 +25,8 @@ public final class Renderer {
     private final int threads;
     /** False only in the test mode that traces every shadow and reflection ray (see {@link #doingAllWork}). */
     private final boolean skipsZeroWork;
+    /** Rows finished so far, for {@link #progress()}: one atomic increment per row, read by whoever shows progress. */
+    private final AtomicInteger rowsDone = new AtomicInteger();
 
     /**
      * @param samplesPerPixel N, or 0 for the scene's own {@code <samples>}
@@ -69,6 +71,11 @@ public final class Renderer {
         return plan;
     }
 
+    /** The share of rows finished, 0 to 1; safe to call from another thread while {@link #render()} runs. */
+    public double progress() {
+        return (double) rowsDone.get() / scene.getHeight();
+    }
+
     /** n, the side of the per-pixel sample grid: round(√N), at least 1. */
     public static int gridSide(int samplesPerPixel) {
         return Math.max(1, (int) Math.round(Math.sqrt(samplesPerPixel)));
@@ -90,6 +97,7 @@ public final class Renderer {
             Thread worker = new Thread(() -> {
                 for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
                     renderRow(tracer, image, j);
+                    rowsDone.incrementAndGet();
                 }
             }, "render-" + k);
             worker.setUncaughtExceptionHandler((t, e) -> {
