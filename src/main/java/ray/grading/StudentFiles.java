@@ -13,7 +13,7 @@ import java.util.stream.Stream;
 
 /**
  * The files a student fills in, found by their markers: every source file under src/main/java that
- * holds a {@code // BEGIN SOLUTION} block, and the task its {@code // TODO(Task N)} comment names.
+ * holds a solution block ({@link SolutionMarkers}), and the task its {@code // TODO(Task N)} comment names.
  * Adding a task to the assignment needs no list to update here.
  */
 public final class StudentFiles {
