@@ -27,6 +27,7 @@ import ray.camera.OrthographicCamera;
 import ray.image.PngReader;
 import ray.math.Vec3;
 import ray.scene.Scene;
+import ray.scene.SceneFiles;
 import ray.shading.RGBNormals;
 import ray.surface.Group;
 import ray.surface.Sphere;

@@ -1,15 +1,11 @@
 package ray.endtoend;
 
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.stream.Collectors;
-import java.util.stream.Stream;
 import ray.image.Image;
 import ray.render.Renderer;
 import ray.scene.Scene;
+import ray.scene.SceneFiles;
 import ray.scene.SceneLoader;
 
 /** The scenes under scenes/, and small renders of them for the end-to-end tests. */
@@ -22,16 +18,7 @@ final class ShippedScenes {
     }
 
     static List<Path> all() {
-        try (Stream<Path> walk = Files.walk(FOLDER)) {
-            return walk.filter(p -> p.toString().endsWith(".xml")).sorted().collect(Collectors.toList());
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    static String nameOf(Path scene) {
-        String f = scene.getFileName().toString();
-        return f.substring(0, f.length() - ".xml".length());
+        return SceneFiles.under(FOLDER);
     }
 
     /** Loads the scene and shrinks its image to WIDTH pixels wide, keeping the aspect ratio (odd height). */

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.function.Function;
 import ray.image.ImageDiff;
 import ray.image.PngReader;
+import ray.scene.SceneFiles;
 
 /**
  * Measures the figures behind {@link ImageDiff}'s constants: for every shipped scene, the share of
@@ -34,7 +35,7 @@ public final class ToleranceSurvey {
         System.out.println("| scene | variant | max | mean | > 1 level | > 2 levels | > 3 levels | verdict |");
         System.out.println("| --- | --- | ---: | ---: | ---: | ---: | ---: | --- |");
         for (Path file : RenderScenes.sceneFiles()) {
-            String name = RenderScenes.nameOf(file);
+            String name = SceneFiles.nameOf(file);
             BufferedImage reference = PngReader.read(RenderScenes.referenceOf(name));
             for (Map.Entry<String, Function<Path, BufferedImage>> v : variants.entrySet()) {
                 BufferedImage image = v.getValue().apply(file);

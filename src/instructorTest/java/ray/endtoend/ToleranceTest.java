@@ -10,6 +10,7 @@ import java.util.function.Function;
 import org.junit.Test;
 import ray.image.ImageDiff;
 import ray.image.PngReader;
+import ray.scene.SceneFiles;
 
 /**
  * {@link ImageDiff}'s constants on real renders against the shipped references: each defect a
@@ -49,7 +50,7 @@ public class ToleranceTest {
     @Test
     public void upsideDownImageFailsOnEveryScene() throws Exception {
         for (Path file : RenderScenes.sceneFiles()) {
-            String scene = RenderScenes.nameOf(file);
+            String scene = SceneFiles.nameOf(file);
             BufferedImage reference = PngReader.read(RenderScenes.referenceOf(scene));
             assertFailsClearly("the image upside down", scene, ImageDiff.compare(reference, Variants.flipped(reference)));
         }

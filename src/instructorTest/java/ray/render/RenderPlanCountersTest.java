@@ -5,19 +5,18 @@ import static org.junit.Assert.assertTrue;
 import static ray.testing.Asserts.v;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.stream.Collectors;
-import java.util.stream.Stream;
 import org.junit.Test;
 import ray.image.Image;
 import ray.math.Vec3;
 import ray.render.RenderPlan.Effect;
 import ray.scene.Scene;
+import ray.scene.SceneFiles;
 import ray.scene.SceneLoader;
 import ray.shading.Glazed;
 import ray.shading.Lambertian;
@@ -133,15 +132,8 @@ public class RenderPlanCountersTest {
             Map.entry("huge-ground-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("inside-closed-mesh", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.TRANSFORMS))));
 
-    private static List<Path> shippedScenes() throws IOException {
-        try (Stream<Path> walk = Files.walk(Path.of("scenes"))) {
-            return walk.filter(p -> p.toString().endsWith(".xml")).sorted().collect(Collectors.toList());
-        }
-    }
-
-    private static String nameOf(Path file) {
-        String f = file.getFileName().toString();
-        return f.substring(0, f.length() - ".xml".length());
+    private static List<Path> shippedScenes() {
+        return SceneFiles.under(Path.of("scenes"));
     }
 
     /** The scene at 24×18 pixels (its own samples), so that every shipped scene renders in a blink. */
@@ -155,9 +147,9 @@ public class RenderPlanCountersTest {
     public void everyShippedScenePlansWhatItsFileHoldsAndTheCountersAgree() throws IOException {
         List<Path> files = shippedScenes();
         assertEquals("a new shipped scene needs its row in SHIPPED", SHIPPED.keySet(),
-                files.stream().map(RenderPlanCountersTest::nameOf).collect(Collectors.toCollection(java.util.TreeSet::new)));
+                files.stream().map(SceneFiles::nameOf).collect(Collectors.toCollection(java.util.TreeSet::new)));
         for (Path file : files) {
-            String name = nameOf(file);
+            String name = SceneFiles.nameOf(file);
             Scene scene = loadSmall(file);
             RenderResult result = new Renderer(scene, 0, 2).render();
             RenderPlan plan = result.plan;
@@ -214,9 +206,9 @@ public class RenderPlanCountersTest {
             RenderPlan plan = RenderPlan.of(loadSmall(file));
             RenderResult skipping = new Renderer(plan, 2).render();
             RenderResult allWork = Renderer.doingAllWork(plan, 2).render();
-            assertSameBits(nameOf(file), skipping.image, allWork.image);
+            assertSameBits(SceneFiles.nameOf(file), skipping.image, allWork.image);
             assertEquals(skipping.rays.camera, allWork.rays.camera);
-            assertTrue(nameOf(file), allWork.rays.shadow >= skipping.rays.shadow);
+            assertTrue(SceneFiles.nameOf(file), allWork.rays.shadow >= skipping.rays.shadow);
         }
     }
 

@@ -18,6 +18,7 @@ import ray.render.RenderResult;
 import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneException;
+import ray.scene.SceneFiles;
 import ray.scene.SceneLoader;
 
 /** {@code ray1 render}: renders scenes to PNG files, per scene a line of figures and a line of its render plan. */
@@ -67,7 +68,7 @@ public final class RenderCommand implements Callable<Integer> {
                     + " file); render somewhere else, e.g. -o out");
             return 1;
         }
-        List<Path> files = SceneFiles.expand(scenes);
+        List<Path> files = SceneArguments.expand(scenes);
         if (files.isEmpty()) {
             err.println("error: no scene files (*.xml) found in " + scenes);
             return 1;

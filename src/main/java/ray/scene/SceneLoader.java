@@ -57,8 +57,7 @@ public final class SceneLoader {
         }
         checkAttributes(root, false);
         Scene scene = new Scene();
-        String fileName = file.getFileName().toString();
-        scene.setName(fileName.endsWith(".xml") ? fileName.substring(0, fileName.length() - 4) : fileName);
+        scene.setName(SceneFiles.nameOf(file));
         setProperties(scene, root);
         try {
             scene.complete();

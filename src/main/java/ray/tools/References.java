@@ -1,12 +1,9 @@
 package ray.tools;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.stream.Collectors;
@@ -17,6 +14,7 @@ import ray.render.RenderResult;
 import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneException;
+import ray.scene.SceneFiles;
 import ray.scene.SceneLoader;
 
 /**
@@ -54,11 +52,11 @@ public final class References {
         Path reference = scenes.resolve("reference");
         Map<String, Path> byName = new TreeMap<>();
         int failures = 0;
-        for (Path file : sceneFiles(scenes)) {
-            Path previous = byName.putIfAbsent(nameOf(file), file);
+        for (Path file : SceneFiles.under(scenes, reference)) {
+            Path previous = byName.putIfAbsent(SceneFiles.nameOf(file), file);
             if (previous != null) {
                 System.err.println("error: " + file + " and " + previous + " would both render to "
-                        + reference.resolve(nameOf(file) + ".png") + "; rename one");
+                        + reference.resolve(SceneFiles.nameOf(file) + ".png") + "; rename one");
                 failures++;
             }
         }
@@ -97,21 +95,5 @@ public final class References {
             System.err.println(failures + " scenes failed");
         }
         return failures == 0 ? 0 : 1;
-    }
-
-    /** Every *.xml under {@code scenes}, sorted, except those under scenes/reference. */
-    static List<Path> sceneFiles(Path scenes) {
-        Path reference = scenes.resolve("reference");
-        try (Stream<Path> walk = Files.walk(scenes)) {
-            return walk.filter(p -> p.toString().endsWith(".xml") && Files.isRegularFile(p) && !p.startsWith(reference))
-                    .sorted().collect(Collectors.toCollection(ArrayList::new));
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    static String nameOf(Path scene) {
-        String fileName = scene.getFileName().toString();
-        return fileName.substring(0, fileName.length() - ".xml".length());
     }
 }

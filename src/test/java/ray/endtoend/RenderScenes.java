@@ -1,20 +1,16 @@
 package ray.endtoend;
 
 import java.awt.image.BufferedImage;
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.stream.Collectors;
-import java.util.stream.Stream;
 import ray.image.PngWriter;
 import ray.render.Renderer;
 import ray.scene.Scene;
+import ray.scene.SceneFiles;
 import ray.scene.SceneLoader;
 import ray.testing.StudentTask;
 
@@ -63,23 +59,13 @@ final class RenderScenes {
 
     /** Every scene file under scenes/, sorted, except any under scenes/reference. */
     static List<Path> sceneFiles() {
-        try (Stream<Path> walk = Files.walk(FOLDER)) {
-            return walk.filter(p -> p.toString().endsWith(".xml") && Files.isRegularFile(p) && !p.startsWith(REFERENCE))
-                    .sorted().collect(Collectors.toCollection(ArrayList::new));
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    static String nameOf(Path scene) {
-        String f = scene.getFileName().toString();
-        return f.substring(0, f.length() - ".xml".length());
+        return SceneFiles.under(FOLDER, REFERENCE);
     }
 
     /** The scene file called {@code name}.xml anywhere under scenes/, or scenes/NAME.xml when there is none (to be reported missing). */
     static Path fileOf(String name) {
         for (Path p : sceneFiles()) {
-            if (nameOf(p).equals(name)) {
+            if (SceneFiles.nameOf(p).equals(name)) {
                 return p;
             }
         }

@@ -10,6 +10,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.junit.Test;
+import ray.scene.SceneFiles;
 
 /**
  * Every shipped scene is graded exactly once: each scene under scenes/ has a task in
@@ -23,7 +24,7 @@ public class SceneTasksTest {
         List<Path> scenes = RenderScenes.sceneFiles();
         assertTrue("no scenes found under " + RenderScenes.FOLDER.toAbsolutePath(), !scenes.isEmpty());
         for (Path file : scenes) {
-            if (!RenderScenes.TASKS.containsKey(RenderScenes.nameOf(file))) {
+            if (!RenderScenes.TASKS.containsKey(SceneFiles.nameOf(file))) {
                 unassigned.add(file.toString());
             }
         }
@@ -48,8 +49,8 @@ public class SceneTasksTest {
     public void noTwoScenesShareAName() {
         Map<String, Path> seen = new HashMap<>();
         for (Path file : RenderScenes.sceneFiles()) {
-            Path previous = seen.putIfAbsent(RenderScenes.nameOf(file), file);
-            assertEquals("two scenes named " + RenderScenes.nameOf(file) + " would share one reference image", null, previous);
+            Path previous = seen.putIfAbsent(SceneFiles.nameOf(file), file);
+            assertEquals("two scenes named " + SceneFiles.nameOf(file) + " would share one reference image", null, previous);
         }
     }
 }
