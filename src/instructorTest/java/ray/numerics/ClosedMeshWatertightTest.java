@@ -37,8 +37,8 @@ public class ClosedMeshWatertightTest {
     public void everySeamRayFromInsideHitsTheMesh() {
         for (double distance : new double[] {1, 1e3, 1e6}) {
             Vec3 center = DIRECTION.times(distance);
-            MeshData data = Icosphere.data(center, 1);
-            Mesh mesh = Icosphere.mesh(data);
+            MeshData data = ClosedMesh.data(center, 1);
+            Mesh mesh = ClosedMesh.mesh(data);
             SeamRays rays = new SeamRays(1000 + (long) Math.log10(distance), data, center, 1);
             for (int i = 0; i < RAYS; i++) {
                 Ray ray = rays.next();
@@ -69,8 +69,8 @@ public class ClosedMeshWatertightTest {
     /** The share of TEXTBOOK_RAYS seam rays, at distance 1, that hit no triangle of the mesh under {@code method}. */
     private static double leakRate(TextbookTriangles.Method method) {
         Vec3 center = DIRECTION;
-        MeshData data = Icosphere.data(center, 1);
-        List<Surface> triangles = Icosphere.mesh(data).children();
+        MeshData data = ClosedMesh.data(center, 1);
+        List<Surface> triangles = ClosedMesh.mesh(data).children();
         SeamRays rays = new SeamRays(1000, data, center, 1);
         int leaks = 0;
         for (int i = 0; i < TEXTBOOK_RAYS; i++) {

@@ -27,7 +27,7 @@ final class SeamRays {
         for (int i = 0; i < vertices.length; i++) {
             vertices[i] = new Vec3(mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]);
         }
-        this.edges = Icosphere.edges(mesh);
+        this.edges = ClosedMesh.edges(mesh);
         this.center = center;
         this.radius = radius;
     }

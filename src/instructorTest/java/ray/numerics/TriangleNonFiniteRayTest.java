@@ -52,7 +52,7 @@ public class TriangleNonFiniteRayTest {
     public void corruptedRaysMissAClosedMesh() {
         Random random = new Random(32);
         Vec3 center = new Vec3(3, -2, 5);
-        Mesh mesh = Icosphere.mesh(Icosphere.data(center, 2));
+        Mesh mesh = ClosedMesh.mesh(ClosedMesh.data(center, 2));
         for (int i = 0; i < 20_000; i++) {
             Vec3 origin = center.plus(randomPoint(random, 0.5));
             Ray good = new Ray(origin, randomPoint(random, 1), random.nextBoolean() ? 0 : -10, Double.POSITIVE_INFINITY);

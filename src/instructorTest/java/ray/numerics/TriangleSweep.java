@@ -17,7 +17,7 @@ import ray.surface.Triangle;
  * tests on the hard cases, about 1e6 seeded rays per row, printed as markdown tables.
  *
  * <ol>
- * <li>Seams of a closed mesh ({@link Icosphere}, radius 1, at distance 1, 1e3, 1e6 from the origin),
+ * <li>Seams of a closed mesh ({@link ClosedMesh}, radius 1, at distance 1, 1e3, 1e6 from the origin),
  *     rays from inside aimed exactly at vertices and edge points ({@link SeamRays}): the share that
  *     hits no triangle (passes between them), as in ClosedMeshWatertightTest.</li>
  * <li>Tiny triangles ({@link TinyTriangleRays}) with rays aimed inside: the share missed, with unit
@@ -60,8 +60,8 @@ public final class TriangleSweep {
         for (int e : new int[] {0, 3, 6}) {
             double distance = Math.pow(10, e);
             Vec3 center = new Vec3(0.6, -0.48, 0.64).times(distance);
-            MeshData data = Icosphere.data(center, 1);
-            Mesh mesh = Icosphere.mesh(data);
+            MeshData data = ClosedMesh.data(center, 1);
+            Mesh mesh = ClosedMesh.mesh(data);
             List<Surface> triangles = mesh.children();
             // counts: rays, vertex rays, then per method leaks and vertex leaks.
             long[] c = sum(rays, 2 + 2 * METHODS.length, (chunk, n, counts) -> {

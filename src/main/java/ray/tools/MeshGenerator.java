@@ -7,6 +7,9 @@ import java.math.RoundingMode;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import ray.math.Vec3;
+import ray.surface.Icosphere;
+import ray.surface.MeshData;
 
 /**
  * Writes the small OBJ meshes that the shipped scenes use, deterministically (same bytes on every
@@ -213,76 +216,27 @@ public final class MeshGenerator {
         }
     }
 
-    // Icosphere room: the 12 vertices of an icosahedron, (0, ±1, ±g), (±1, ±g, 0), (±g, 0, ±1) with
-    // g = (1 + √5)/2, on the unit sphere; each triangle split into four by its edge midpoints pushed
-    // out onto the sphere, twice (20 · 4 · 4 = 320 triangles, 162 vertices). Every edge is shared by
-    // exactly two faces, which use the same vertex indices: a closed mesh. The faces are listed
-    // clockwise seen from outside, so (v1 − v0) × (v2 − v0) points toward the center: lit from inside.
+    // Icosphere room: ray.surface.Icosphere subdivided twice on the unit sphere (320 triangles, 162
+    // shared vertices), a closed mesh. Its faces are listed reversed, clockwise seen from outside,
+    // so that (v1 − v0) × (v2 − v0) points toward the center: a room lit and seen from inside.
     private static final int ICOSPHERE_SUBDIVISIONS = 2;
 
     private static void writeIcosphereRoom(Path file) throws IOException {
-        double g = (1 + Math.sqrt(5)) / 2;
-        java.util.List<double[]> vertices = new java.util.ArrayList<>();
-        double[][] corners = {
-            {-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-            {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1},
-        };
-        for (double[] c : corners) {
-            vertices.add(onUnitSphere(c[0], c[1], c[2]));
-        }
-        // The icosahedron's faces, counter-clockwise seen from outside.
-        int[] faces = {
-            0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8,
-            3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1,
-        };
-        for (int level = 0; level < ICOSPHERE_SUBDIVISIONS; level++) {
-            java.util.Map<Long, Integer> midpoints = new java.util.HashMap<>();
-            int[] finer = new int[4 * faces.length];
-            int k = 0;
-            for (int f = 0; f < faces.length; f += 3) {
-                int a = faces[f];
-                int b = faces[f + 1];
-                int c = faces[f + 2];
-                int ab = midpoint(vertices, midpoints, a, b);
-                int bc = midpoint(vertices, midpoints, b, c);
-                int ca = midpoint(vertices, midpoints, c, a);
-                for (int corner : new int[] {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca}) {
-                    finer[k++] = corner;
-                }
-            }
-            faces = finer;
-        }
+        MeshData room = Icosphere.of(ICOSPHERE_SUBDIVISIONS, Vec3.ZERO, 1);
+        int[] faces = room.triangles;
         try (PrintWriter out = open(file)) {
             header(out, file, String.format("an icosahedron subdivided %d times on the unit sphere (%d triangles,"
                     + " %d shared vertices), wound inward: a closed room to be lit and seen from inside",
-                    ICOSPHERE_SUBDIVISIONS, faces.length / 3, vertices.size()));
-            for (double[] v : vertices) {
-                vertex(out, "v", v[0], v[1], v[2]);
+                    ICOSPHERE_SUBDIVISIONS, faces.length / 3, room.vertexCount()));
+            double[] p = room.positions;
+            for (int i = 0; i < p.length; i += 3) {
+                vertex(out, "v", p[i], p[i + 1], p[i + 2]);
             }
             for (int f = 0; f < faces.length; f += 3) {
                 // Reversed (a, c, b): clockwise seen from outside, counter-clockwise from the center.
                 out.println("f " + (faces[f] + 1) + " " + (faces[f + 2] + 1) + " " + (faces[f + 1] + 1));
             }
         }
-    }
-
-    private static double[] onUnitSphere(double x, double y, double z) {
-        double length = Math.sqrt(x * x + y * y + z * z);
-        return new double[] {x / length, y / length, z / length};
-    }
-
-    /** The index of the midpoint of edge ab pushed onto the unit sphere, made once per edge. */
-    private static int midpoint(java.util.List<double[]> vertices, java.util.Map<Long, Integer> cache, int a, int b) {
-        long key = (long) Math.min(a, b) << 32 | Math.max(a, b);
-        Integer known = cache.get(key);
-        if (known != null) {
-            return known;
-        }
-        double[] p = vertices.get(a);
-        double[] q = vertices.get(b);
-        vertices.add(onUnitSphere(p[0] + q[0], p[1] + q[1], p[2] + q[2]));
-        cache.put(key, vertices.size() - 1);
-        return vertices.size() - 1;
     }
 
     private static PrintWriter open(Path file) throws IOException {
