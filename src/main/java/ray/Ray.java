@@ -18,6 +18,8 @@ public final class Ray {
     public final Vec3 direction;
     public double start;
     public double end;
+    /** Made on first use by {@link #frame()}; shared with copies, which have the same direction. */
+    private RayFrame frame;
 
     /** A ray from {@code origin} that starts at t = 0 and never ends. */
     public Ray(Vec3 origin, Vec3 direction) {
@@ -38,7 +40,19 @@ public final class Ray {
 
     /** A copy of this ray that its owner can shorten without changing this one. */
     public Ray copy() {
-        return new Ray(origin, direction, start, end);
+        Ray copy = new Ray(origin, direction, start, end);
+        copy.frame = frame;
+        return copy;
+    }
+
+    /** The watertight triangle test's per-ray constants, computed on the first call. */
+    public RayFrame frame() {
+        RayFrame f = frame;
+        if (f == null) {
+            f = new RayFrame(direction);
+            frame = f;
+        }
+        return f;
     }
 
     @Override

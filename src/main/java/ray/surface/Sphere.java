@@ -57,7 +57,7 @@ public class Sphere extends Surface {
         }
         double halfB = f.dot(d);
         double c = f.dot(f) - radius * radius;
-        Vec3 unitD = d.times(1 / Math.sqrt(a));
+        Vec3 unitD = ray.frame().unitDirection; // d/|d|, computed once per ray
         Vec3 l = f.minus(unitD.times(f.dot(unitD)));
         double discriminantOverA = radius * radius - l.dot(l);
         if (!(discriminantOverA >= 0)) {

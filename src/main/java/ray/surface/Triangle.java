@@ -2,6 +2,7 @@ package ray.surface;
 
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.RayFrame;
 import ray.math.Vec3;
 
 /**
@@ -16,8 +17,12 @@ public class Triangle extends Surface {
     private Vec3 n0;
     private Vec3 n1;
     private Vec3 n2;
-    private Vec3 faceNormal = new Vec3(0, 0, 1);
-    /** Whether the vertices span no area (collinear, repeated, or not finite); set by complete(). */
+    /**
+     * Whether the vertices span no area (collinear, repeated, or not finite); set by complete().
+     * The face normal itself is not stored: a mesh has millions of triangles and only the hit ones
+     * need it, so it is computed per hit (see {@link #getFaceNormal()}), which saves a Vec3 (40
+     * bytes) per triangle.
+     */
     private boolean degenerate;
 
     public Triangle() {
@@ -66,8 +71,10 @@ public class Triangle extends Surface {
         return n0 != null;
     }
 
+    /** normalize((v1 − v0) × (v2 − v0)), or the zero vector for a degenerate triangle. */
     public Vec3 getFaceNormal() {
-        return faceNormal;
+        Vec3 cross = v1.minus(v0).cross(v2.minus(v0));
+        return cross.isFinite() && cross.lengthSquared() > 0 ? cross.normalized() : Vec3.ZERO;
     }
 
     /**
@@ -80,18 +87,17 @@ public class Triangle extends Surface {
     public Surface complete() {
         Vec3 cross = v1.minus(v0).cross(v2.minus(v0));
         degenerate = !(cross.isFinite() && cross.lengthSquared() > 0);
-        faceNormal = degenerate ? Vec3.ZERO : cross.normalized();
         return this;
     }
 
     /** The unit normal at barycentric coordinates (beta, gamma): the face normal, or the blend of vertex normals. */
     public Vec3 normalAt(double beta, double gamma) {
         if (n0 == null) {
-            return faceNormal;
+            return getFaceNormal();
         }
         Vec3 blend = n0.times(1 - beta - gamma).plus(n1.times(beta)).plus(n2.times(gamma)).normalized();
         // Normals that cancel out, or NaN/infinite inputs, fall back to the face normal (finite by complete()).
-        return blend.isFinite() && blend.lengthSquared() > 0 ? blend : faceNormal;
+        return blend.isFinite() && blend.lengthSquared() > 0 ? blend : getFaceNormal();
     }
 
     @Override
@@ -115,27 +121,28 @@ public class Triangle extends Surface {
         // Name the axes so that the ray's largest direction component is z, by a cyclic shift that
         // keeps the frame right-handed. (The paper also swaps x and y when that component is
         // negative, to keep the winding for back-face culling; this test is two-sided and divides
-        // by det, so a mirror, which negates u, v, w and det together, changes nothing.)
+        // by det, so a mirror, which negates u, v, w and det together, changes nothing.) The ray
+        // computes its axis and shear once for all the triangles it meets (RayFrame).
         Vec3 p = ray.origin;
-        Vec3 d = ray.direction;
-        int kz = largestAxis(d);
+        RayFrame frame = ray.frame();
+        int kz = frame.kz;
         // Vertices relative to the ray origin, in the shifted axes (one row per shift).
         double a0 = v0.x - p.x, a1 = v0.y - p.y, a2 = v0.z - p.z;
         double b0 = v1.x - p.x, b1 = v1.y - p.y, b2 = v1.z - p.z;
         double c0 = v2.x - p.x, c1 = v2.y - p.y, c2 = v2.z - p.z;
-        double ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz;
+        double ax, ay, az, bx, by, bz, cx, cy, cz;
         if (kz == 2) {
-            ax = a0; ay = a1; az = a2; bx = b0; by = b1; bz = b2; cx = c0; cy = c1; cz = c2; dx = d.x; dy = d.y; dz = d.z;
+            ax = a0; ay = a1; az = a2; bx = b0; by = b1; bz = b2; cx = c0; cy = c1; cz = c2;
         } else if (kz == 0) {
-            ax = a1; ay = a2; az = a0; bx = b1; by = b2; bz = b0; cx = c1; cy = c2; cz = c0; dx = d.y; dy = d.z; dz = d.x;
+            ax = a1; ay = a2; az = a0; bx = b1; by = b2; bz = b0; cx = c1; cy = c2; cz = c0;
         } else {
-            ax = a2; ay = a0; az = a1; bx = b2; by = b0; bz = b1; cx = c2; cy = c0; cz = c1; dx = d.z; dy = d.x; dz = d.y;
+            ax = a2; ay = a0; az = a1; bx = b2; by = b0; bz = b1; cx = c2; cy = c0; cz = c1;
         }
         // Shear the vertices so that the ray becomes the +z axis through the origin. Each vertex's
         // 2D position depends on that vertex and the ray only, so triangles that share it agree.
-        double sz = 1 / dz;
-        double sx = dx * sz;
-        double sy = dy * sz;
+        double sz = frame.sz;
+        double sx = frame.sx;
+        double sy = frame.sy;
         ax -= sx * az;
         ay -= sy * az;
         bx -= sx * bz;
@@ -173,7 +180,7 @@ public class Triangle extends Surface {
         // origin (a rough error bound is 250·2⁻⁵³·m²; in-plane rays measured at most 1.2·2⁻⁵³·m²).
         // Only such a det needs the exact test.
         double m = Math.max(largestMagnitude(a0, a1, a2), Math.max(largestMagnitude(b0, b1, b2), largestMagnitude(c0, c1, c2)));
-        if (Math.abs(det) <= PARALLEL_BOUND * m * m && parallelToPlane(d)) {
+        if (Math.abs(det) <= PARALLEL_BOUND * m * m && parallelToPlane(ray.direction)) {
             return false;
         }
         // The hit's z in the sheared frame (z scaled by sz), interpolated with the unnormalized
@@ -237,14 +244,6 @@ public class Triangle extends Surface {
 
     private static double largestMagnitude(double x, double y, double z) {
         return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
-    }
-
-    /** The axis of v's largest absolute component (x on ties with y or z, y on ties with z). */
-    private static int largestAxis(Vec3 v) {
-        double x = Math.abs(v.x);
-        double y = Math.abs(v.y);
-        double z = Math.abs(v.z);
-        return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
     }
 
     /**
