@@ -18,7 +18,7 @@ public final class Ray {
     public final Vec3 direction;
     public double start;
     public double end;
-    /** Made on first use by {@link #frame()}; shared with copies, which have the same direction. */
+    /** Made on first use by {@link #frame()}, or by {@link #copy()}; shared with copies, which have the same direction. */
     private RayFrame frame;
 
     /** A ray from {@code origin} that starts at t = 0 and never ends. */
@@ -41,7 +41,9 @@ public final class Ray {
     /** A copy of this ray that its owner can shorten without changing this one. */
     public Ray copy() {
         Ray copy = new Ray(origin, direction, start, end);
-        copy.frame = frame;
+        // Made here rather than in the copy: a group's copy is its own, so constants made there
+        // would be made again for every group the ray enters (a box is a group of 12 triangles).
+        copy.frame = frame();
         return copy;
     }
 

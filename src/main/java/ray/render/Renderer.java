@@ -2,6 +2,10 @@ package ray.render;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import ray.camera.Camera;
 import ray.image.Image;
@@ -27,6 +31,17 @@ public final class Renderer {
     private final boolean skipsZeroWork;
     /** Rows finished so far, for {@link #progress()}: one atomic increment per row, read by whoever shows progress. */
     private final AtomicInteger rowsDone = new AtomicInteger();
+    /**
+     * Render threads, kept between renders (a batch renders many scenes): a fresh thread starts
+     * with small allocation buffers (TLABs) that the JVM grows only as it learns the thread's
+     * rate, which measurably slowed short renders on two threads. Daemon threads, so an idle
+     * pool never keeps the JVM alive.
+     */
+    private static final ExecutorService WORKERS = Executors.newCachedThreadPool(runnable -> {
+        Thread thread = new Thread(runnable, "render-worker");
+        thread.setDaemon(true);
+        return thread;
+    });
 
     /**
      * @param samplesPerPixel N, or 0 for the scene's own {@code <samples>}
@@ -88,42 +103,49 @@ public final class Renderer {
         Image image = new Image(width, height);
         AtomicInteger nextRow = new AtomicInteger();
         List<PixelTracer> tracers = new ArrayList<>();
-        List<Thread> workers = new ArrayList<>();
-        List<Throwable> failures = new ArrayList<>();
+        List<Runnable> workers = new ArrayList<>();
         int workerCount = Math.min(threads, height);
         for (int k = 0; k < workerCount; k++) {
             PixelTracer tracer = new PixelTracer(plan, skipsZeroWork);
             tracers.add(tracer);
-            Thread worker = new Thread(() -> {
-                for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
-                    renderRow(tracer, image, j);
-                    rowsDone.incrementAndGet();
-                }
-            }, "render-" + k);
-            worker.setUncaughtExceptionHandler((t, e) -> {
-                synchronized (failures) {
-                    failures.add(e);
-                }
-                nextRow.set(height);
-            });
-            workers.add(worker);
-        }
-        if (workerCount == 1) {
-            workers.get(0).run();
-        } else {
-            workers.forEach(Thread::start);
-            for (Thread worker : workers) {
+            workers.add(() -> {
                 try {
-                    worker.join();
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    throw new IllegalStateException("interrupted while rendering", e);
+                    for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
+                        renderRow(tracer, image, j);
+                        rowsDone.incrementAndGet();
+                    }
+                } catch (RuntimeException | Error e) {
+                    nextRow.set(height); // the other workers stop after their current row
+                    throw e;
                 }
+            });
+        }
+        // The calling thread is one of the workers; the others come from the pool.
+        List<Future<?>> others = new ArrayList<>();
+        for (Runnable worker : workers.subList(1, workerCount)) {
+            others.add(WORKERS.submit(worker));
+        }
+        Throwable failure = null;
+        try {
+            workers.get(0).run();
+        } catch (RuntimeException | Error e) {
+            failure = e;
+        }
+        for (Future<?> other : others) {
+            try {
+                other.get();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("interrupted while rendering", e);
+            } catch (ExecutionException e) {
+                failure = failure != null ? failure : e.getCause();
             }
         }
-        if (!failures.isEmpty()) {
-            Throwable first = failures.get(0);
-            throw first instanceof RuntimeException ? (RuntimeException) first : new IllegalStateException(first);
+        if (failure instanceof Error) {
+            throw (Error) failure;
+        }
+        if (failure != null) {
+            throw failure instanceof RuntimeException ? (RuntimeException) failure : new IllegalStateException(failure);
         }
         RayStats total = new RayStats();
         tracers.forEach(t -> total.add(t.stats()));

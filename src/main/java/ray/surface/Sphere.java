@@ -55,14 +55,14 @@ public class Sphere extends Surface {
         if (!(a > 0) || Double.isInfinite(a)) {
             return false;
         }
-        double halfB = f.dot(d);
-        double c = f.dot(f) - radius * radius;
         Vec3 unitD = ray.frame().unitDirection; // d/|d|, computed once per ray
         Vec3 l = f.minus(unitD.times(f.dot(unitD)));
         double discriminantOverA = radius * radius - l.dot(l);
         if (!(discriminantOverA >= 0)) {
-            return false;
+            return false; // most rays miss most spheres: decide that before anything else
         }
+        double halfB = f.dot(d);
+        double c = f.dot(f) - radius * radius;
         // Stable quadratic (Numerical Recipes §5.6): q = −(b' + sign(b')√Δ'), roots q/a and c/q,
         // so that the root near zero is never the difference of two nearly equal numbers.
         double rootDelta = Math.sqrt(a) * Math.sqrt(discriminantOverA);
