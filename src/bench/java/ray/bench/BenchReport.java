@@ -47,6 +47,7 @@ final class BenchReport {
         r.threads();
         r.effects();
         r.noEffect();
+        r.anchor();
         r.perScene();
         r.mesh();
         return r.md.toString();
@@ -98,12 +99,12 @@ final class BenchReport {
     }
 
     private void effects() {
-        md.append("| effect | with it | without it | ratio |\n|---|---|---|---|\n");
+        md.append("| effect | with it (1 thread) | without it | ratio |\n|---|---|---|---|\n");
         for (String[] pair : EFFECT_PAIRS) {
             double with = renderMs(variant(pair[1]), 1);
             double without = renderMs(variant(pair[2]), 1);
-            md.append(row(pair[0], ms(with) + " (" + name(pair[1]) + ")", ms(without) + " (" + name(pair[2]) + ")",
-                    fmt("%.2f", with / without)));
+            md.append(row(pair[0], withError(variant(pair[1])) + " (" + name(pair[1]) + ")",
+                    withError(variant(pair[2])) + " (" + name(pair[2]) + ")", fmt("%.2f", with / without)));
         }
         md.append('\n');
     }
@@ -113,6 +114,17 @@ final class BenchReport {
         double bare = score("NoEffectBench.bareLoop");
         md.append("| no-effect scene (normals, 1 thread) | bare camera + closest-hit loop | ratio |\n|---|---|---|\n");
         md.append(row(ms(framework), ms(bare), fmt("%.3f", framework / bare))).append('\n');
+    }
+
+    /** Camera samples per second on every core for the scene the Mitsuba 3 anchor describes. */
+    private void anchor() {
+        md.append("| scene (160×120, 26 primitives, 2 point lights, shadows) | samples per pixel | time (2 threads) | samples/s |\n"
+                + "|---|---|---|---|\n");
+        for (String[] v : new String[][] {{"lit", "1"}, {"antialiased", "4"}}) {
+            double time = renderMs(variant(v[0]), 2);
+            md.append(row("bench: " + v[0], v[1], ms(time), fmt("%.2f M", 160 * 120 * Double.parseDouble(v[1]) / time / 1e3)));
+        }
+        md.append('\n');
     }
 
     private void perScene() {
@@ -150,6 +162,16 @@ final class BenchReport {
 
     private double renderMs(String scene, int threads) {
         return score("RenderBench.render", "scene", scene, "threads", String.valueOf(threads));
+    }
+
+    /** One thread's render time with JMH's 99.9% confidence half-width. */
+    private String withError(String scene) {
+        Map<String, Object> r = find("RenderBench.render", "scene", scene, "threads", "1");
+        if (r == null) {
+            return "–";
+        }
+        Map<?, ?> m = (Map<?, ?>) r.get("primaryMetric");
+        return fmt("%.2f ± %.2f ms", num(m.get("score")), num(m.get("scoreError")));
     }
 
     private String variant(String name) {

@@ -28,8 +28,8 @@ import ray.scene.SceneLoader;
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
 @Warmup(iterations = 3, time = 1)
-@Measurement(iterations = 5, time = 1)
-@Fork(1)
+@Measurement(iterations = 3, time = 1)
+@Fork(2) // the JIT's choices vary from JVM to JVM: one fork's render time can be 15-25% off another's
 public class RenderBench {
     /** A scene file, relative to the project folder. */
     @Param({"scenes/one-sphere.xml"})
