@@ -49,17 +49,20 @@ public class Sphere extends Surface {
         // The textbook discriminant b² − 4ac cancels catastrophically for small or far spheres.
         // Ray Tracing Gems ch. 7 computes it from the ray's closest-approach vector instead:
         // with f = p − c and d̂ = d/|d|, l = f − (f·d̂)d̂ and Δ/(4a) = r² − l·l.
-        Vec3 d = ray.direction;
+        // Most rays miss most spheres, so the miss is decided first, from d̂ (made once per ray).
+        // A zero, NaN or infinite d puts a NaN in d̂ and so in the discriminant: a miss. A d whose
+        // |d|² overflows has d̂ = 0 and is rejected just below.
         Vec3 f = ray.origin.minus(center);
-        double a = d.dot(d);
-        if (!(a > 0) || Double.isInfinite(a)) {
-            return false;
-        }
-        Vec3 unitD = ray.frame().unitDirection; // d/|d|, computed once per ray
+        Vec3 unitD = ray.frame().unitDirection;
         Vec3 l = f.minus(unitD.times(f.dot(unitD)));
         double discriminantOverA = radius * radius - l.dot(l);
         if (!(discriminantOverA >= 0)) {
-            return false; // most rays miss most spheres: decide that before anything else
+            return false;
+        }
+        Vec3 d = ray.direction;
+        double a = d.dot(d);
+        if (!(a > 0) || Double.isInfinite(a)) {
+            return false; // |d|² underflowed or overflowed: no usable root
         }
         double halfB = f.dot(d);
         double c = f.dot(f) - radius * radius;
