@@ -155,4 +155,22 @@ public class RenderCommandTest {
         JsonObject s = JsonParser.parseString(Files.readString(stats)).getAsJsonArray().get(0).getAsJsonObject();
         assertEquals(1, s.get("threads").getAsInt());
     }
+
+    @Test
+    public void jitterOptionShowsInThePlanAndTheStats() throws Exception {
+        Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
+        Path stats = root.resolve("stats.json");
+        CliRun run = CliRun.of("render", "--samples", "4", "--jitter", "--seed", "7", "--stats", stats.toString(),
+                "-o", output.toString(), scene.toString());
+        assertEquals(run.toString(), 0, run.status);
+        assertTrue(run.out, run.out.contains("effects: lighting(1 shader) shadows(1 light) antialiasing(2x2 jittered);"));
+        JsonObject s = JsonParser.parseString(Files.readString(stats)).getAsJsonArray().get(0).getAsJsonObject();
+        assertEquals("jittered (seed 7)", s.get("sampling").getAsString());
+
+        CliRun grid = CliRun.of("render", "--samples", "4", "--stats", stats.toString(), "-o", output.toString(), scene.toString());
+        assertEquals(grid.toString(), 0, grid.status);
+        s = JsonParser.parseString(Files.readString(stats)).getAsJsonArray().get(0).getAsJsonObject();
+        assertEquals("grid", s.get("sampling").getAsString());
+        assertTrue(grid.out, grid.out.contains("antialiasing(2x2);"));
+    }
 }

@@ -15,7 +15,9 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import ray.image.PngWriter;
 import ray.render.RenderResult;
+import ray.render.RenderPlan;
 import ray.render.Renderer;
+import ray.render.SamplePattern;
 import ray.scene.Scene;
 import ray.scene.SceneException;
 import ray.scene.SceneFiles;
@@ -37,6 +39,14 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Option(names = "--samples", paramLabel = "N", description = "Samples per pixel, overriding the scenes' <samples>.")
     Integer samples;
+
+    @Option(names = "--jitter", description = "Place each pixel's samples at random in their grid cells (stratified "
+            + "sampling) instead of at the cell centers. The random numbers follow from --seed and the pixel, so the "
+            + "image is the same for any thread count.")
+    boolean jitter;
+
+    @Option(names = "--seed", paramLabel = "N", defaultValue = "1", description = "Seed of --jitter (default: ${DEFAULT-VALUE}).")
+    long seed;
 
     @Option(names = "--threads", paramLabel = "N", description = "Worker threads (default: one per core).")
     Integer threads;
@@ -86,7 +96,9 @@ public final class RenderCommand implements Callable<Integer> {
             }
             try {
                 Scene scene = SceneLoader.load(file);
-                Renderer renderer = new Renderer(scene, samples == null ? 0 : samples, threads == null ? 0 : threads);
+                SamplePattern pattern = jitter ? SamplePattern.jittered(seed) : SamplePattern.GRID;
+                Renderer renderer = new Renderer(RenderPlan.of(scene, samples == null ? 0 : samples, pattern),
+                        threads == null ? 0 : threads);
                 RenderResult result;
                 // On stderr, and only at a terminal: stdout stays one line per scene for scripts.
                 try (ProgressBar bar = ProgressBar.show(name, renderer::progress, err, System.console() != null)) {

@@ -16,6 +16,8 @@ final class SceneStats {
     int width;
     int height;
     int samples;
+    /** "grid" or "jittered (seed S)": where each pixel's samples fall. */
+    String sampling;
     int threads;
     double seconds;
     List<String> effects;
@@ -32,6 +34,7 @@ final class SceneStats {
         s.width = scene.getWidth();
         s.height = scene.getHeight();
         s.samples = result.samplesPerPixel;
+        s.sampling = result.plan.pattern().describe();
         s.threads = result.threads;
         s.seconds = result.seconds;
         s.effects = result.plan.effects();

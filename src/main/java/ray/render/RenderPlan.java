@@ -51,13 +51,15 @@ public final class RenderPlan {
 
     private final Scene scene;
     private final int gridSide;
+    private final SamplePattern pattern;
     private final long primitives;
     /** What each running effect counts (lights, shaders, groups, triangles, grid side), in Effect order. */
     private final Map<Effect, String> running = new EnumMap<>(Effect.class);
 
-    private RenderPlan(Scene scene, int samplesPerPixel) {
+    private RenderPlan(Scene scene, int samplesPerPixel, SamplePattern pattern) {
         this.scene = scene;
         this.gridSide = Renderer.gridSide(samplesPerPixel);
+        this.pattern = pattern;
         Walk walk = new Walk();
         walk.surface(scene.getSurfaces());
         this.primitives = walk.primitives;
@@ -73,7 +75,7 @@ public final class RenderPlan {
             running.put(Effect.REFLECTION, count(walk.glazed, "shader") + ", depth " + Glazed.MAX_DEPTH);
         }
         if (gridSide > 1) {
-            running.put(Effect.ANTIALIASING, gridSide + "x" + gridSide);
+            running.put(Effect.ANTIALIASING, gridSide + "x" + gridSide + (pattern.isJittered() ? " jittered" : ""));
         }
         if (walk.transforms > 0) {
             running.put(Effect.TRANSFORMS, count(walk.transforms, "group"));
@@ -83,17 +85,22 @@ public final class RenderPlan {
         }
     }
 
-    /** The plan for the scene as written, with its own {@code <samples>}. */
+    /** The plan for the scene as written, with its own {@code <samples>} on the regular grid. */
     public static RenderPlan of(Scene scene) {
-        return new RenderPlan(scene, scene.getSamples());
+        return of(scene, 0);
     }
 
-    /** The plan for the scene rendered with {@code samplesPerPixel} samples, or its own when 0. */
+    /** The plan for the scene rendered with {@code samplesPerPixel} samples (its own when 0) on the regular grid. */
     public static RenderPlan of(Scene scene, int samplesPerPixel) {
+        return of(scene, samplesPerPixel, SamplePattern.GRID);
+    }
+
+    /** The plan for the scene rendered with {@code samplesPerPixel} samples (its own when 0) placed by {@code pattern}. */
+    public static RenderPlan of(Scene scene, int samplesPerPixel, SamplePattern pattern) {
         if (samplesPerPixel < 0) {
             throw new IllegalArgumentException("samples must be ≥ 0, got " + samplesPerPixel);
         }
-        return new RenderPlan(scene, samplesPerPixel > 0 ? samplesPerPixel : scene.getSamples());
+        return new RenderPlan(scene, samplesPerPixel > 0 ? samplesPerPixel : scene.getSamples(), pattern);
     }
 
     public Scene scene() {
@@ -102,6 +109,11 @@ public final class RenderPlan {
 
     public boolean runs(Effect effect) {
         return running.containsKey(effect);
+    }
+
+    /** Where each pixel's samples fall: the regular grid or jittered. */
+    public SamplePattern pattern() {
+        return pattern;
     }
 
     /** n, the side of the per-pixel sample grid; n² camera rays per pixel. */

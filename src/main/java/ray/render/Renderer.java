@@ -14,8 +14,8 @@ import ray.scene.Scene;
 
 /**
  * The pixel loop. Pixel (i, j), j from the bottom, is sampled on an n×n grid, n = round(√N) for N
- * samples per pixel, at image point ((i + (a + ½)/n)/nx, (j + (b + ½)/n)/ny), and the samples are
- * averaged. Threads pull whole rows from a shared counter; every pixel is computed the same way
+ * samples per pixel, at image point ((i + (a + ½)/n)/nx, (j + (b + ½)/n)/ny) (or, with a jittered
+ * {@link SamplePattern}, at a random point of each grid cell), and the samples are averaged. Threads pull whole rows from a shared counter; every pixel is computed the same way
  * whichever thread takes it, so the image is identical for any thread count.
  *
  * <p>It runs a {@link RenderPlan}: the grid side and the primitive count come from the plan, and
@@ -158,13 +158,14 @@ public final class Renderer {
         int width = scene.getWidth();
         int height = scene.getHeight();
         int n = plan.gridSide();
+        SamplePattern pattern = plan.pattern();
         double weight = 1.0 / (n * n);
         for (int i = 0; i < width; i++) {
             double r = 0, g = 0, b = 0;
             for (int a = 0; a < n; a++) {
                 for (int c = 0; c < n; c++) {
-                    double u = (i + (a + 0.5) / n) / width;
-                    double v = (j + (c + 0.5) / n) / height;
+                    double u = (i + pattern.x(i, j, a, c, n)) / width;
+                    double v = (j + pattern.y(i, j, a, c, n)) / height;
                     Vec3 radiance = tracer.cameraRadiance(camera.generateRay(u, v));
                     r += radiance.x;
                     g += radiance.y;
