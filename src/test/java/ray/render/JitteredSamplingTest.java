@@ -3,15 +3,11 @@ package ray.render;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertNotEquals;
 import static org.junit.Assert.assertTrue;
-import static ray.testing.Asserts.v;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.Comparator;
 import java.util.List;
 import org.junit.Test;
-import ray.Ray;
-import ray.camera.Camera;
 import ray.scene.Scene;
 
 /**
@@ -22,17 +18,6 @@ import ray.scene.Scene;
 public class JitteredSamplingTest {
     private static final int WIDTH = 7;
     private static final int HEIGHT = 5;
-
-    /** Records every image point it is asked for and returns a ray that misses everything. */
-    private static final class RecordingCamera extends Camera {
-        final List<double[]> asked = Collections.synchronizedList(new ArrayList<>());
-
-        @Override
-        public Ray generateRay(double imageU, double imageV) {
-            asked.add(new double[] {imageU, imageV});
-            return new Ray(v(0, 0, 0), v(0, 0, -1));
-        }
-    }
 
     private static List<double[]> askedBy(int samples, SamplePattern pattern, int threads) {
         RecordingCamera camera = new RecordingCamera();

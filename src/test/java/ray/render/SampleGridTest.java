@@ -1,15 +1,11 @@
 package ray.render;
 
 import static org.junit.Assert.assertEquals;
-import static ray.testing.Asserts.v;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.Comparator;
 import java.util.List;
 import org.junit.Test;
-import ray.Ray;
-import ray.camera.Camera;
 import ray.scene.Scene;
 
 /**
@@ -19,17 +15,6 @@ import ray.scene.Scene;
  */
 public class SampleGridTest {
     private static final double TOL = 1e-12;
-
-    /** Records every image point it is asked for and returns a ray that misses everything. */
-    private static final class RecordingCamera extends Camera {
-        final List<double[]> asked = Collections.synchronizedList(new ArrayList<>());
-
-        @Override
-        public Ray generateRay(double imageU, double imageV) {
-            asked.add(new double[] {imageU, imageV});
-            return new Ray(v(0, 0, 0), v(0, 0, -1));
-        }
-    }
 
     private static final Comparator<double[]> BY_U_THEN_V =
             Comparator.<double[]>comparingDouble(p -> p[0]).thenComparingDouble(p -> p[1]);
