@@ -47,7 +47,7 @@ public final class Ray {
         return copy;
     }
 
-    /** The watertight triangle test's per-ray constants, computed on the first call. */
+    /** The constants of this ray's direction that the sphere and triangle tests use (see RayFrame), made on the first call. */
     public RayFrame frame() {
         RayFrame f = frame;
         if (f == null) {

@@ -6,7 +6,6 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
@@ -252,7 +251,6 @@ final class BenchReport {
     }
 
     private static String row(String... cells) {
-        List<String> list = new ArrayList<>(List.of(cells));
-        return "| " + String.join(" | ", list) + " |\n";
+        return "| " + String.join(" | ", cells) + " |\n";
     }
 }

@@ -112,8 +112,7 @@ public final class LogLogPlot {
                         pts.toString().trim(), escape(s.color), s.dashed ? " stroke-dasharray=\"6 4\"" : ""));
             } else {
                 for (Point p : s.points) {
-                    svg.append(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/>\n",
-                            x.toPixel(p.x), y.toPixel(p.y), escape(s.color)));
+                    svg.append(dot(x.toPixel(p.x), y.toPixel(p.y), s.color));
                     if (p.label != null) {
                         svg.append(text(x.toPixel(p.x) + 6, y.toPixel(p.y) - 6, "start", p.label, "font-size=\"10\""));
                     }
@@ -125,7 +124,7 @@ public final class LogLogPlot {
             double ly = TOP + 14 + 16 * k;
             double lx = WIDTH - RIGHT - 170;
             svg.append(s.line ? line(lx, ly - 4, lx + 18, ly - 4, s.color, s.dashed)
-                    : String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/>\n", lx + 9, ly - 4, escape(s.color)));
+                    : dot(lx + 9, ly - 4, s.color));
             svg.append(text(lx + 24, ly, "start", s.name, ""));
         }
         return svg.append("</svg>\n").toString();
@@ -176,6 +175,10 @@ public final class LogLogPlot {
     private static String line(double x1, double y1, double x2, double y2, String color, boolean dashed) {
         return String.format(Locale.ROOT, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\"%s/>\n",
                 x1, y1, x2, y2, escape(color), dashed ? " stroke-dasharray=\"6 4\"" : "");
+    }
+
+    private static String dot(double x, double y, String color) {
+        return String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"%s\"/>\n", x, y, escape(color));
     }
 
     private static String text(double x, double y, String anchor, String content, String extra) {

@@ -15,8 +15,9 @@ import ray.scene.Scene;
 /**
  * The pixel loop. Pixel (i, j), j from the bottom, is sampled on an n×n grid, n = round(√N) for N
  * samples per pixel, at image point ((i + (a + ½)/n)/nx, (j + (b + ½)/n)/ny) (or, with a jittered
- * {@link SamplePattern}, at a random point of each grid cell), and the samples are averaged. Threads pull whole rows from a shared counter; every pixel is computed the same way
- * whichever thread takes it, so the image is identical for any thread count.
+ * {@link SamplePattern}, at a random point of each grid cell), and the samples are averaged.
+ * Threads pull whole rows from a shared counter; every pixel is computed the same way whichever
+ * thread takes it, so the image is identical for any thread count.
  *
  * <p>It runs a {@link RenderPlan}: the grid side and the primitive count come from the plan, and
  * effects the scene does not call for cost nothing, since nothing in the loop asks for them (no

@@ -19,10 +19,13 @@ public final class SamplePattern {
 
     private final boolean jittered;
     private final long seed;
+    /** mix(seed), the first step of every hash, made once rather than per sample. */
+    private final long seedHash;
 
     private SamplePattern(boolean jittered, long seed) {
         this.jittered = jittered;
         this.seed = seed;
+        this.seedHash = mix(seed);
     }
 
     /** Jittered samples whose random offsets are fixed by {@code seed}. */
@@ -54,8 +57,7 @@ public final class SamplePattern {
      * generators", OOPSLA 2014) applied once per argument, its top 53 bits as a double.
      */
     private double uniform(int i, int j, int a, int b, int axis) {
-        long h = mix(seed);
-        h = mix(h ^ i);
+        long h = mix(seedHash ^ i);
         h = mix(h ^ j);
         h = mix(h ^ a);
         h = mix(h ^ b);

@@ -73,8 +73,18 @@ public class Triangle extends Surface {
 
     /** normalize((v1 − v0) × (v2 − v0)), or the zero vector for a degenerate triangle. */
     public Vec3 getFaceNormal() {
-        Vec3 cross = v1.minus(v0).cross(v2.minus(v0));
-        return cross.isFinite() && cross.lengthSquared() > 0 ? cross.normalized() : Vec3.ZERO;
+        Vec3 cross = edgeCross();
+        return spansArea(cross) ? cross.normalized() : Vec3.ZERO;
+    }
+
+    /** (v1 − v0) × (v2 − v0): the unnormalized face normal, twice the area in length. */
+    private Vec3 edgeCross() {
+        return v1.minus(v0).cross(v2.minus(v0));
+    }
+
+    /** Whether an edge cross product is a usable normal: finite, and not zero or underflowed to zero. */
+    private static boolean spansArea(Vec3 cross) {
+        return cross.isFinite() && cross.lengthSquared() > 0;
     }
 
     /**
@@ -85,8 +95,7 @@ public class Triangle extends Surface {
      */
     @Override
     public Surface complete() {
-        Vec3 cross = v1.minus(v0).cross(v2.minus(v0));
-        degenerate = !(cross.isFinite() && cross.lengthSquared() > 0);
+        degenerate = !spansArea(edgeCross());
         return this;
     }
 
