@@ -40,7 +40,7 @@ public final class TextbookSurfaces {
         return new TextbookSphereOf(sphere);
     }
 
-    private static Surface replaceLeaves(Surface surface, Function<Surface, Surface> leaf) {
+    static Surface replaceLeaves(Surface surface, Function<Surface, Surface> leaf) {
         if (surface instanceof Transformed) {
             Transformed t = (Transformed) surface;
             return new Transformed(replaceLeaves(t.children().get(0), leaf), t.toWorld());

@@ -61,7 +61,7 @@ public final class LogLogPlot {
         this.yLabel = yLabel;
     }
 
-    /** Points drawn as dots, each with its label. */
+    /** Points drawn as dots, each with its label; a null name leaves them out of the legend. */
     public LogLogPlot points(String name, String color, List<Point> points) {
         series.add(new Series(name, color, false, false, points));
         return this;
@@ -119,9 +119,12 @@ public final class LogLogPlot {
                 }
             }
         }
-        for (int k = 0; k < series.size(); k++) {
-            Series s = series.get(k);
-            double ly = TOP + 14 + 16 * k;
+        int entry = 0;
+        for (Series s : series) {
+            if (s.name == null) {
+                continue; // drawn, but not in the legend (dots on a line that is)
+            }
+            double ly = TOP + 14 + 16 * entry++;
             double lx = WIDTH - RIGHT - 170;
             svg.append(s.line ? line(lx, ly - 4, lx + 18, ly - 4, s.color, s.dashed)
                     : dot(lx + 9, ly - 4, s.color));

@@ -15,6 +15,7 @@ final class PixelTracer implements Tracer {
     private final Surface surfaces;
     private final long primitives;
     private final boolean skipsZeroWork;
+    private final RayOffsets offsets;
     private final RayStats stats = new RayStats();
     /** Scratch record for shadow tests, whose hit is never read. */
     private final IntersectionRecord shadowHit = new IntersectionRecord();
@@ -25,6 +26,7 @@ final class PixelTracer implements Tracer {
         this.surfaces = scene.getSurfaces();
         this.primitives = plan.primitives();
         this.skipsZeroWork = skipsZeroWork;
+        this.offsets = plan.offsets();
     }
 
     /**
@@ -58,7 +60,7 @@ final class PixelTracer implements Tracer {
     @Override
     public boolean unoccluded(IntersectionRecord hit, Vec3 lightPosition) {
         stats.shadow++;
-        return !surfaces.intersect(shadowHit, SecondaryRays.shadowRay(hit, lightPosition));
+        return !surfaces.intersect(shadowHit, offsets.shadowRay(hit, lightPosition));
     }
 
     @Override
@@ -74,6 +76,6 @@ final class PixelTracer implements Tracer {
     @Override
     public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
         stats.reflection++;
-        return shade(SecondaryRays.reflectionRay(hit, direction), depth);
+        return shade(offsets.reflectionRay(hit, direction), depth);
     }
 }

@@ -53,6 +53,10 @@ public final class RenderPlan {
     private final int gridSide;
     private final SamplePattern pattern;
     private final long primitives;
+    /** Where rays leaving a surface start: {@link RayOffsets#SCALED} unless a study of the alternatives asks otherwise. */
+    private final RayOffsets offsets;
+    /** The pixels rendered: the whole image unless a window of it is asked for. */
+    private final PixelWindow window;
     /** What each running effect counts (lights, shaders, groups, triangles, grid side), in Effect order. */
     private final Map<Effect, String> running = new EnumMap<>(Effect.class);
 
@@ -60,6 +64,8 @@ public final class RenderPlan {
         this.scene = scene;
         this.gridSide = Renderer.gridSide(samplesPerPixel);
         this.pattern = pattern;
+        this.offsets = RayOffsets.SCALED;
+        this.window = PixelWindow.whole(scene.getWidth(), scene.getHeight());
         Walk walk = new Walk();
         walk.surface(scene.getSurfaces());
         this.primitives = walk.primitives;
@@ -103,8 +109,45 @@ public final class RenderPlan {
         return new RenderPlan(scene, samplesPerPixel > 0 ? samplesPerPixel : scene.getSamples(), pattern);
     }
 
+    /** A copy of {@code plan} with other offsets or window; the effects stay those of the scene. */
+    private RenderPlan(RenderPlan plan, RayOffsets offsets, PixelWindow window) {
+        this.scene = plan.scene;
+        this.gridSide = plan.gridSide;
+        this.pattern = plan.pattern;
+        this.primitives = plan.primitives;
+        this.running.putAll(plan.running);
+        this.offsets = offsets;
+        this.window = window;
+    }
+
+    /** This plan with secondary rays started by {@code rule} (for comparing the rules; renders use SCALED). */
+    public RenderPlan withOffsets(RayOffsets rule) {
+        return new RenderPlan(this, rule, window);
+    }
+
+    /**
+     * This plan rendering only {@code part} of the image, to an image of the window's size.
+     *
+     * @throws IllegalArgumentException when the window does not lie inside the scene's image
+     */
+    public RenderPlan withWindow(PixelWindow part) {
+        if (!part.fitsIn(scene.getWidth(), scene.getHeight())) {
+            throw new IllegalArgumentException("the window " + part + " does not fit in the " + scene.getWidth() + "x"
+                    + scene.getHeight() + " image");
+        }
+        return new RenderPlan(this, offsets, part);
+    }
+
     public Scene scene() {
         return scene;
+    }
+
+    public RayOffsets offsets() {
+        return offsets;
+    }
+
+    public PixelWindow window() {
+        return window;
     }
 
     public boolean runs(Effect effect) {

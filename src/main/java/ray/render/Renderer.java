@@ -89,7 +89,7 @@ public final class Renderer {
 
     /** The share of rows finished, 0 to 1; safe to call from another thread while {@link #render()} runs. */
     public double progress() {
-        return (double) rowsDone.get() / scene.getHeight();
+        return (double) rowsDone.get() / plan.window().height;
     }
 
     /** n, the side of the per-pixel sample grid: round(√N), at least 1. */
@@ -99,8 +99,9 @@ public final class Renderer {
 
     public RenderResult render() {
         long startNanos = System.nanoTime();
-        int width = scene.getWidth();
-        int height = scene.getHeight();
+        // The image is the plan's window (the whole image unless a study asks for part of it).
+        int width = plan.window().width;
+        int height = plan.window().height;
         Image image = new Image(width, height);
         AtomicInteger nextRow = new AtomicInteger();
         List<PixelTracer> tracers = new ArrayList<>();
@@ -154,14 +155,18 @@ public final class Renderer {
         return new RenderResult(image, plan, total, n * n, workerCount, (System.nanoTime() - startNanos) / 1e9);
     }
 
-    private void renderRow(PixelTracer tracer, Image image, int j) {
+    /** Row {@code row} of the window, counted from its bottom, into the image of the window. */
+    private void renderRow(PixelTracer tracer, Image image, int row) {
         Camera camera = scene.getCamera();
         int width = scene.getWidth();
         int height = scene.getHeight();
+        PixelWindow window = plan.window();
+        int x0 = window.x;
+        int j = window.firstRowFromBottom(height) + row;
         int n = plan.gridSide();
         SamplePattern pattern = plan.pattern();
         double weight = 1.0 / (n * n);
-        for (int i = 0; i < width; i++) {
+        for (int i = x0; i < x0 + window.width; i++) {
             double r = 0, g = 0, b = 0;
             for (int a = 0; a < n; a++) {
                 for (int c = 0; c < n; c++) {
@@ -173,7 +178,7 @@ public final class Renderer {
                     b += radiance.z;
                 }
             }
-            image.set(i, j, new Vec3(r * weight, g * weight, b * weight));
+            image.set(i - x0, row, new Vec3(r * weight, g * weight, b * weight));
         }
     }
 }

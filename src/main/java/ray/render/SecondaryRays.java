@@ -56,18 +56,34 @@ public final class SecondaryRays {
 
     /** The hit point pushed off the surface, along its geometric normal, toward the side that {@code direction} points to. */
     public static Vec3 offsetOrigin(IntersectionRecord hit, Vec3 direction) {
+        return offsetOrigin(hit, direction, EPSILON);
+    }
+
+    /**
+     * The same with the unit roundoff of another arithmetic: {@code 0x1p-24} for intersection
+     * tests that compute in float, whose hit points and tests err by float's ε, not double's.
+     */
+    static Vec3 offsetOrigin(IntersectionRecord hit, Vec3 direction, double unitRoundoff) {
         HitGeometry g = hit.geometry();
-        double offset = OFFSET_ULPS * EPSILON * g.scale;
+        double offset = OFFSET_ULPS * unitRoundoff * g.scale;
         return g.point.plusScaled(g.normal.dot(direction) >= 0 ? offset : -offset, g.normal);
     }
 
     /** The segment from just off the hit to just short of the light: r(t) for 0 < t < SHADOW_END. */
     public static Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
-        Vec3 origin = offsetOrigin(hit, lightPosition.minus(hit.geometry().point));
+        return shadowRay(hit, lightPosition, EPSILON);
+    }
+
+    static Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition, double unitRoundoff) {
+        Vec3 origin = offsetOrigin(hit, lightPosition.minus(hit.geometry().point), unitRoundoff);
         return new Ray(origin, lightPosition.minus(origin), 0, SHADOW_END);
     }
 
     public static Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
-        return new Ray(offsetOrigin(hit, direction), direction);
+        return reflectionRay(hit, direction, EPSILON);
+    }
+
+    static Ray reflectionRay(IntersectionRecord hit, Vec3 direction, double unitRoundoff) {
+        return new Ray(offsetOrigin(hit, direction, unitRoundoff), direction);
     }
 }

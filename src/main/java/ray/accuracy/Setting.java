@@ -1,0 +1,75 @@
+package ray.accuracy;
+
+import java.util.function.UnaryOperator;
+import ray.render.RayOffsets;
+import ray.render.RenderPlan;
+import ray.render.SamplePattern;
+import ray.scene.Scene;
+import ray.surface.Surface;
+
+/**
+ * One choice a renderer makes, as a point of a {@link Sweep}: how many samples per pixel and where
+ * they fall, where secondary rays start, and (for the instructor's sweeps) which intersection code
+ * the surfaces run. Everything not named here is the framework's own choice.
+ */
+public final class Setting {
+    /** The label in tables and plots, e.g. "jittered 16" or "float". */
+    public final String label;
+    /** Samples per pixel, or 0 for the scene's own {@code <samples>}. */
+    public final int samples;
+    public final SamplePattern pattern;
+    public final RayOffsets offsets;
+    /** Rewrites the scene's surface tree; null for the framework's own intersection code. */
+    private final UnaryOperator<Surface> surfaces;
+
+    private Setting(String label, int samples, SamplePattern pattern, RayOffsets offsets, UnaryOperator<Surface> surfaces) {
+        this.label = label;
+        this.samples = samples;
+        this.pattern = pattern;
+        this.offsets = offsets;
+        this.surfaces = surfaces;
+    }
+
+    /** The framework's choices at the scene's own samples, on the regular grid. */
+    public static Setting framework(String label) {
+        return new Setting(label, 0, SamplePattern.GRID, RayOffsets.SCALED, null);
+    }
+
+    /** {@code samples} per pixel placed by {@code pattern}; everything else the framework's. */
+    public static Setting sampled(String label, int samples, SamplePattern pattern) {
+        return new Setting(label, samples, pattern, RayOffsets.SCALED, null);
+    }
+
+    /** The scene's own samples with secondary rays started by {@code rule}. */
+    public static Setting offsets(String label, RayOffsets rule) {
+        return new Setting(label, 0, SamplePattern.GRID, rule, null);
+    }
+
+    /**
+     * The scene's own samples with its surfaces rewritten by {@code surfaces} (e.g. every sphere
+     * tested by another formula). The rewrite must keep each hit naming a primitive of the original
+     * scene, so shading and offsets stay the framework's.
+     */
+    public static Setting surfaces(String label, UnaryOperator<Surface> surfaces) {
+        return new Setting(label, 0, SamplePattern.GRID, RayOffsets.SCALED, surfaces);
+    }
+
+    /** This setting with secondary rays started by {@code rule} instead, under another label. */
+    public Setting withOffsets(String newLabel, RayOffsets rule) {
+        return new Setting(newLabel, samples, pattern, rule, surfaces);
+    }
+
+    /** The plan that renders {@code scene} with this setting (the whole image). */
+    public RenderPlan plan(Scene scene) {
+        Scene rendered = scene;
+        if (surfaces != null) {
+            rendered = SceneCopy.withSurfaces(scene, surfaces.apply(scene.getSurfaces()));
+        }
+        return RenderPlan.of(rendered, samples, pattern).withOffsets(offsets);
+    }
+
+    @Override
+    public String toString() {
+        return label;
+    }
+}

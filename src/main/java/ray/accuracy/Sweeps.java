@@ -1,0 +1,64 @@
+package ray.accuracy;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.ServiceLoader;
+import ray.render.RayOffsets;
+import ray.render.SamplePattern;
+
+/** The sweeps of the accuracy study: the framework's own and those a {@link SweepProvider} adds. */
+public final class Sweeps {
+    /** The samples-per-pixel points of the study unless asked otherwise. */
+    public static final List<Integer> SAMPLES = List.of(1, 4, 16, 64, 256);
+    /** Every sweep the full study has, in report order. */
+    public static final List<String> ALL = List.of("samples", "arithmetic", "intersection", "offsets");
+    /** The seed of the jittered points (the reference uses another, so its noise is independent). */
+    static final long SEED = 1;
+
+    private Sweeps() {
+    }
+
+    /** Regular grid and jittered at each count: the convergence study. */
+    public static Sweep samples(List<Integer> counts) {
+        List<Setting> settings = new ArrayList<>();
+        for (int n : counts) {
+            settings.add(Setting.sampled("grid " + n, n, SamplePattern.GRID));
+        }
+        for (int n : counts) {
+            settings.add(Setting.sampled("jittered " + n, n, SamplePattern.jittered(SEED)));
+        }
+        return new Sweep("samples", "How fast does the error fall with samples per pixel, on the regular grid and jittered?",
+                settings, false);
+    }
+
+    /** The framework's scaled offsets against none and a fixed epsilon. */
+    public static Sweep offsets() {
+        return new Sweep("offsets", "Where do shadow and reflection rays start: what does each rule cost, and where does it leave acne?",
+                List.of(Setting.offsets("offset scaled", RayOffsets.SCALED), Setting.offsets("offset fixed 1e-6", RayOffsets.FIXED),
+                        Setting.offsets("offset none", RayOffsets.NONE)), true);
+    }
+
+    /** The samples and offsets sweeps, with the providers' sweeps between them, in {@link #ALL}'s order. */
+    public static List<Sweep> available(List<Integer> counts) {
+        List<Sweep> sweeps = new ArrayList<>();
+        sweeps.add(samples(counts));
+        for (SweepProvider provider : ServiceLoader.load(SweepProvider.class)) {
+            sweeps.addAll(provider.sweeps());
+        }
+        sweeps.add(offsets());
+        sweeps.sort((a, b) -> Integer.compare(order(a.name), order(b.name)));
+        return sweeps;
+    }
+
+    /** The sweeps of {@link #ALL} that {@code sweeps} lacks (in a student's copy: arithmetic and intersection). */
+    public static List<String> missing(List<Sweep> sweeps) {
+        List<String> missing = new ArrayList<>(ALL);
+        sweeps.forEach(s -> missing.remove(s.name));
+        return missing;
+    }
+
+    private static int order(String name) {
+        int k = ALL.indexOf(name);
+        return k >= 0 ? k : ALL.size();
+    }
+}

@@ -1,0 +1,153 @@
+package ray.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import ray.accuracy.AccuracyStudy;
+import ray.accuracy.ReportWriter;
+import ray.accuracy.SceneStudy;
+import ray.accuracy.Sweeps;
+import ray.render.PixelWindow;
+import ray.scene.Scene;
+import ray.scene.SceneException;
+import ray.scene.SceneLoader;
+
+/** {@code ray1 accuracy}: the accuracy–cost study of scenes, written as a report (DIR/index.html). */
+@Command(name = "accuracy", mixinStandardHelpOptions = true,
+        description = {"Renders each scene over sweeps of samples per pixel (grid and jittered), secondary-ray offsets and, in "
+            + "the instructor's copy, float vs double and textbook vs robust intersection; measures time and error against a "
+            + "converged reference on a window of the image; writes DIR/index.html with tables, plots and image strips."})
+public final class AccuracyCommand implements Callable<Integer> {
+    @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "Report folder (default: ${DEFAULT-VALUE}).")
+    Path output = Path.of("build/accuracy");
+
+    @Option(names = "--samples", paramLabel = "N,N,...", split = ",", description = "Samples-per-pixel sweep (default: 1,4,16,64,256).")
+    List<Integer> samples = new ArrayList<>(Sweeps.SAMPLES);
+
+    @Option(names = "--reference-samples", paramLabel = "N", description = "Samples per pixel of the converged reference "
+            + "(default: ${DEFAULT-VALUE}).")
+    int referenceSamples = AccuracyStudy.REFERENCE_SAMPLES;
+
+    @Option(names = "--window", paramLabel = "X,Y,W,H", description = "The pixels to measure (Y from the top); default: the "
+            + "--window-size square with the most edges.")
+    String window;
+
+    @Option(names = "--window-size", paramLabel = "N", description = "Side of the chosen window (default: ${DEFAULT-VALUE}).")
+    int windowSize = AccuracyStudy.WINDOW_SIZE;
+
+    @Option(names = "--runs", paramLabel = "N", description = "Timed runs per setting, at least 3 (default: ${DEFAULT-VALUE}).")
+    int runs = AccuracyStudy.RUNS;
+
+    @Option(names = "--threads", paramLabel = "N", description = "Worker threads of the timed renders (default: 1, the "
+            + "steadiest clock; the reference and the whole-image renders use every core).")
+    Integer threads;
+
+    @Option(names = "--quiet", description = "Do not print a line per measured setting.")
+    boolean quiet;
+
+    @Option(names = "--verbose", description = "Show the stack trace of unexpected failures.")
+    boolean verbose;
+
+    @Parameters(arity = "1..*", paramLabel = "SCENE.xml|DIR", description = "Scene files or folders of them.")
+    List<Path> scenes;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public Integer call() throws IOException {
+        PixelWindow part = checkOptions();
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        if (Files.exists(output.resolve(RenderCommand.REFERENCE_MARKER))) {
+            err.println("error: " + output + " holds the reference images (it has a " + RenderCommand.REFERENCE_MARKER
+                    + " file); write the report somewhere else, e.g. -o build/accuracy");
+            return 1;
+        }
+        List<Path> files = SceneArguments.expand(scenes);
+        if (files.isEmpty()) {
+            err.println("error: no scene files (*.xml) found in " + scenes);
+            return 1;
+        }
+        AccuracyStudy study = new AccuracyStudy(samples, windowSize, part, referenceSamples, runs, threads == null ? 1 : threads,
+                line -> {
+                    if (!quiet) {
+                        out.println(line);
+                        out.flush();
+                    }
+                });
+        List<SceneStudy> studies = new ArrayList<>();
+        int failures = 0;
+        for (Path file : files) {
+            try {
+                Scene scene = SceneLoader.load(file);
+                if (part != null && !part.fitsIn(scene.getWidth(), scene.getHeight())) {
+                    err.println("error: " + file + ": the window " + part + " does not fit in its " + scene.getWidth() + "x"
+                            + scene.getHeight() + " image");
+                    failures++;
+                    continue;
+                }
+                studies.add(study.study(scene));
+            } catch (SceneException e) {
+                err.println("error: " + e.getMessage());
+                failures++;
+            } catch (RuntimeException e) {
+                err.println("error: " + file + ": " + Errors.oneLine(e));
+                if (verbose) {
+                    e.printStackTrace(err);
+                }
+                failures++;
+            }
+            err.flush();
+        }
+        if (!studies.isEmpty()) {
+            ReportWriter.write(studies, output, "ray1 " + String.join(" ", spec.commandLine().getParseResult().originalArgs()));
+            out.println("report: " + output.resolve("index.html") + " (" + studies.size() + " scene" + (studies.size() == 1 ? "" : "s") + ")");
+            List<String> missing = studies.get(0).missing;
+            if (!missing.isEmpty()) {
+                out.println("not in this copy: the " + String.join(" and ", missing) + " sweeps (see docs/accuracy.md)");
+            }
+        }
+        if (failures > 0) {
+            err.println(failures + " of " + files.size() + " scenes failed");
+        }
+        return failures == 0 ? 0 : 1;
+    }
+
+    /** Rejects options no study can use, with picocli's one-line usage error; returns the parsed --window. */
+    private PixelWindow checkOptions() {
+        CommandLine cl = spec.commandLine();
+        if (samples.isEmpty() || new HashSet<>(samples).size() != samples.size()) {
+            throw new CommandLine.ParameterException(cl, "--samples must be distinct counts, e.g. 1,4,16, got " + samples);
+        }
+        for (int n : samples) {
+            if (n < 1 || n >= referenceSamples) {
+                throw new CommandLine.ParameterException(cl, "--samples must lie between 1 and --reference-samples − 1 ("
+                        + (referenceSamples - 1) + "), got " + n);
+            }
+        }
+        if (runs < 3) {
+            throw new CommandLine.ParameterException(cl, "--runs must be at least 3 (a median with a spread), got " + runs);
+        }
+        if (windowSize < 1) {
+            throw new CommandLine.ParameterException(cl, "--window-size must be at least 1, got " + windowSize);
+        }
+        if (threads != null && threads < 1) {
+            throw new CommandLine.ParameterException(cl, "--threads must be at least 1, got " + threads);
+        }
+        try {
+            return window == null ? null : PixelWindow.parse(window);
+        } catch (IllegalArgumentException e) {
+            throw new CommandLine.ParameterException(cl, "--window: " + e.getMessage());
+        }
+    }
+}

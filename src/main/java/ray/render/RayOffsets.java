@@ -1,0 +1,90 @@
+package ray.render;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+
+/**
+ * How rays that leave a surface avoid hitting it again at their own origin ("shadow acne"): the
+ * three rules a renderer can choose from, which the accuracy report compares. Every render uses
+ * {@link #SCALED}; the other two exist to show what it fixes.
+ */
+public enum RayOffsets {
+    /** No offset: new rays start at the computed hit point with t &gt; 0. About half re-hit their surface. */
+    NONE("none") {
+        @Override
+        public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
+            return new Ray(hit.location, lightPosition.minus(hit.location), 0, SecondaryRays.SHADOW_END);
+        }
+
+        @Override
+        public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
+            return new Ray(hit.location, direction);
+        }
+    },
+    /**
+     * The textbook rule: new rays start at the computed hit point and ignore hits closer than a fixed
+     * distance {@link #FIXED_EPSILON} (t_min = ε/|d|). Right for scenes of size ~1 near the origin;
+     * too small far from it (the hit point's error grows with its coordinates) and too large for
+     * features smaller than ε.
+     */
+    FIXED("fixed 1e-6") {
+        @Override
+        public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
+            Vec3 d = lightPosition.minus(hit.location);
+            return new Ray(hit.location, d, FIXED_EPSILON / d.length(), SecondaryRays.SHADOW_END);
+        }
+
+        @Override
+        public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
+            return new Ray(hit.location, direction, FIXED_EPSILON / direction.length(), Double.POSITIVE_INFINITY);
+        }
+    },
+    /** The framework's rule ({@link SecondaryRays}): off the re-projected hit along the geometric normal, by a bound scaled to the coordinates. */
+    SCALED("scaled") {
+        @Override
+        public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
+            return SecondaryRays.shadowRay(hit, lightPosition);
+        }
+
+        @Override
+        public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
+            return SecondaryRays.reflectionRay(hit, direction);
+        }
+    },
+    /**
+     * The framework's rule sized for intersection tests that compute in float: the same
+     * {@link SecondaryRays#OFFSET_ULPS} units, of float's ε = 2⁻²⁴ instead of double's 2⁻⁵³. A float
+     * test rounds a new ray's origin to float, which moves it by up to 2⁻²⁴ of its coordinates,
+     * so double-sized offsets leave it on either side of the surface.
+     */
+    SCALED_FOR_FLOAT("scaled for float") {
+        @Override
+        public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
+            return SecondaryRays.shadowRay(hit, lightPosition, FLOAT_EPSILON);
+        }
+
+        @Override
+        public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
+            return SecondaryRays.reflectionRay(hit, direction, FLOAT_EPSILON);
+        }
+    };
+
+    /** Float's unit roundoff, 2⁻²⁴. */
+    static final double FLOAT_EPSILON = 0x1p-24;
+
+    /** The fixed rule's distance, in scene units: the 1e-6 of the numerics issue's tolerance survey. */
+    public static final double FIXED_EPSILON = 1e-6;
+
+    public final String label;
+
+    RayOffsets(String label) {
+        this.label = label;
+    }
+
+    /** The segment from the hit toward the light that a shadow test traces. */
+    public abstract Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition);
+
+    /** The ray from the hit in {@code direction} that a reflection traces. */
+    public abstract Ray reflectionRay(IntersectionRecord hit, Vec3 direction);
+}
