@@ -129,6 +129,7 @@ public final class AccuracyCommand implements Callable<Integer> {
         if (samples.isEmpty() || new HashSet<>(samples).size() != samples.size()) {
             throw new CommandLine.ParameterException(cl, "--samples must be distinct counts, e.g. 1,4,16, got " + samples);
         }
+        OptionChecks.samples(cl, "--reference-samples", referenceSamples);
         for (int n : samples) {
             if (n < 1 || n >= referenceSamples) {
                 throw new CommandLine.ParameterException(cl, "--samples must lie between 1 and --reference-samples − 1 ("
@@ -138,12 +139,8 @@ public final class AccuracyCommand implements Callable<Integer> {
         if (runs < 3) {
             throw new CommandLine.ParameterException(cl, "--runs must be at least 3 (a median with a spread), got " + runs);
         }
-        if (windowSize < 1) {
-            throw new CommandLine.ParameterException(cl, "--window-size must be at least 1, got " + windowSize);
-        }
-        if (threads != null && threads < 1) {
-            throw new CommandLine.ParameterException(cl, "--threads must be at least 1, got " + threads);
-        }
+        OptionChecks.atLeastOne(cl, "--window-size", windowSize);
+        OptionChecks.atLeastOne(cl, "--threads", threads);
         try {
             return window == null ? null : PixelWindow.parse(window);
         } catch (IllegalArgumentException e) {

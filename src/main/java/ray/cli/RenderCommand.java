@@ -65,12 +65,8 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if (samples != null && samples < 1) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "--samples must be at least 1, got " + samples);
-        }
-        if (threads != null && threads < 1) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "--threads must be at least 1, got " + threads);
-        }
+        OptionChecks.samples(spec.commandLine(), "--samples", samples);
+        OptionChecks.atLeastOne(spec.commandLine(), "--threads", threads);
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         if (Files.exists(output.resolve(REFERENCE_MARKER))) {

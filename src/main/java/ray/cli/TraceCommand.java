@@ -41,9 +41,7 @@ public final class TraceCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        if (samples != null && samples < 1) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "--samples must be at least 1, got " + samples);
-        }
+        OptionChecks.samples(spec.commandLine(), "--samples", samples);
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         Scene scene;

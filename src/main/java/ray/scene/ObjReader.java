@@ -30,22 +30,36 @@ public final class ObjReader {
     private int triangleCount;
     private boolean anyNormals;
     private int lineNumber;
+    private final int maxVertices;
+    private final int maxTriangles;
 
-    private ObjReader(Path file) {
+    private ObjReader(Path file, int maxVertices, int maxTriangles) {
         this.file = file;
+        this.maxVertices = maxVertices;
+        this.maxTriangles = maxTriangles;
     }
 
+    /** Reads a mesh of at most {@link Limits#MAX_MESH_VERTICES} vertices and {@link Limits#MAX_MESH_TRIANGLES} triangles. */
     public static MeshData read(Path file) {
-        return new ObjReader(file).readAll();
+        return read(file, Limits.MAX_MESH_VERTICES, Limits.MAX_MESH_TRIANGLES);
+    }
+
+    /** With other limits, so that a test can reach them with a small file. */
+    static MeshData read(Path file, int maxVertices, int maxTriangles) {
+        return new ObjReader(file, maxVertices, maxTriangles).readAll();
     }
 
     private MeshData readAll() {
         try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            BoundedLines lines = new BoundedLines(in, Limits.MAX_OBJ_LINE);
             String line;
-            while ((line = in.readLine()) != null) {
+            while ((line = lines.next()) != null) {
                 lineNumber++;
                 parseLine(line);
             }
+        } catch (BoundedLines.TooLong e) {
+            throw new SceneException(file, lineNumber + 1, 1, "the line is longer than " + Limits.MAX_OBJ_LINE
+                    + " characters; expected an OBJ statement (v, vn, vt, f, ...) per line");
         } catch (NoSuchFileException e) {
             throw new SceneException(file, 1, 1, "no such mesh file");
         } catch (IOException e) {
@@ -67,10 +81,12 @@ public final class ObjReader {
         String[] words = line.split("\\s+");
         switch (words[0]) {
             case "v":
+                checkCount(vertexCount, maxVertices, "vertices");
                 readVector(words, positions, "v x y z");
                 vertexCount++;
                 break;
             case "vn":
+                checkCount(normalCount, maxVertices, "normals");
                 readVector(words, normals, "vn x y z");
                 normalCount++;
                 break;
@@ -136,6 +152,7 @@ public final class ObjReader {
         }
         anyNormals |= faceHasNormals;
         for (int k = 1; k + 1 < corners; k++) {
+            checkCount(triangleCount, maxTriangles, "triangles");
             triangleCount++;
             triangles.add(vertex[0]);
             triangles.add(vertex[k]);
@@ -144,6 +161,13 @@ public final class ObjReader {
             triangleNormals.add(faceHasNormals ? normal[0] : -1);
             triangleNormals.add(faceHasNormals ? normal[k] : -1);
             triangleNormals.add(faceHasNormals ? normal[k + 1] : -1);
+        }
+    }
+
+    /** Stops a mesh that is about to pass one of the {@link Limits}, at the line that passes it. */
+    private void checkCount(int count, int limit, String what) {
+        if (count == limit) {
+            throw error("the mesh has more than " + limit + " " + what + "; expected at most " + limit);
         }
     }
 

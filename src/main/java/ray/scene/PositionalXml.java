@@ -37,6 +37,14 @@ final class PositionalXml {
     static Document read(Path file) {
         byte[] bytes;
         try {
+            if (Files.isDirectory(file)) {
+                throw new SceneException(file, 1, 1, "is a folder; expected a scene file (.xml)");
+            }
+            long size = Files.size(file);
+            if (size > Limits.MAX_SCENE_BYTES) {
+                throw new SceneException(file, 1, 1, "the file has " + size + " bytes; expected a scene file of at most "
+                        + Limits.MAX_SCENE_BYTES + " bytes (meshes belong in OBJ files)");
+            }
             bytes = Files.readAllBytes(file);
         } catch (NoSuchFileException e) {
             throw new SceneException(file, 1, 1, "no such file");
@@ -54,6 +62,9 @@ final class PositionalXml {
             parser.setProperty("http://xml.org/sax/properties/lexical-handler", builder);
             parser.parse(new java.io.ByteArrayInputStream(bytes), builder);
             return document;
+        } catch (TooDeep e) {
+            throw new SceneException(file, e.line, e.column, "elements are nested more than " + Limits.MAX_NESTING
+                    + " deep; expected a scene of at most " + Limits.MAX_NESTING + " levels");
         } catch (SAXParseException e) {
             String message = e.getMessage();
             if (message != null && message.contains("DOCTYPE")) {
@@ -73,6 +84,17 @@ final class PositionalXml {
     static int[] position(Node node) {
         Object p = node.getUserData(POSITION);
         return p instanceof int[] ? (int[]) p : new int[] {1, 1};
+    }
+
+    /** Thrown from the SAX handler to stop at the element that nests too deep. */
+    private static final class TooDeep extends SAXException {
+        final int line;
+        final int column;
+
+        TooDeep(int line, int column) {
+            this.line = line;
+            this.column = column;
+        }
     }
 
     private static final class Builder extends DefaultHandler2 {
@@ -96,7 +118,7 @@ final class PositionalXml {
         }
 
         @Override
-        public void startElement(String uri, String localName, String qName, Attributes attributes) {
+        public void startElement(String uri, String localName, String qName, Attributes attributes) throws SAXException {
             flushText();
             Element element = document.createElement(qName);
             for (int i = 0; i < attributes.getLength(); i++) {
@@ -109,6 +131,10 @@ final class PositionalXml {
                 open.peek().appendChild(element);
             }
             open.push(element);
+            if (open.size() > Limits.MAX_NESTING) {
+                // Stopped here: the loader recurses once per level and would overflow its stack.
+                throw new TooDeep(locator.getLineNumber(), locator.getColumnNumber());
+            }
             moveCursorToLocator();
         }
 

@@ -32,6 +32,10 @@ public class Scene {
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("the image size must be two positive integers, got " + width + " " + height);
         }
+        String tooLarge = Limits.imageSizeProblem(width, height);
+        if (tooLarge != null) {
+            throw new IllegalArgumentException(tooLarge);
+        }
         this.width = width;
         this.height = height;
     }
@@ -50,6 +54,10 @@ public class Scene {
     public void setSamples(int samples) {
         if (samples <= 0) {
             throw new IllegalArgumentException("samples must be a positive integer, got " + samples);
+        }
+        String tooMany = Limits.samplesProblem(samples);
+        if (tooMany != null) {
+            throw new IllegalArgumentException(tooMany);
         }
         this.samples = samples;
     }
