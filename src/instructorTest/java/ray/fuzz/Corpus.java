@@ -1,0 +1,92 @@
+package ray.fuzz;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import ray.scene.SceneFiles;
+
+/**
+ * The files the fuzzer starts from: the shipped scenes (every *.xml under a folder, reference
+ * renders excluded) and the OBJ meshes they name. Each worker mutates its own copy of the folder,
+ * so the originals are never touched and workers never see each other's damage.
+ */
+final class Corpus {
+    private static final Pattern DATA = Pattern.compile("<data>\\s*([^<]+?)\\s*</data>");
+
+    private final Path root;
+    /** Scene files, relative to the root, sorted. */
+    final List<Path> scenes;
+    /** Per scene, the meshes it names (relative to the root). */
+    final Map<Path, List<Path>> meshes;
+
+    private Corpus(Path root, List<Path> scenes, Map<Path, List<Path>> meshes) {
+        this.root = root;
+        this.scenes = scenes;
+        this.meshes = meshes;
+    }
+
+    static Corpus of(Path root) {
+        List<Path> scenes = SceneFiles.under(root, root.resolve("reference")).stream().map(root::relativize)
+                .collect(Collectors.toList());
+        if (scenes.isEmpty()) {
+            throw new IllegalArgumentException("no scene files under " + root);
+        }
+        Map<Path, List<Path>> meshes = new LinkedHashMap<>();
+        for (Path scene : scenes) {
+            List<Path> named = new ArrayList<>();
+            Matcher m = DATA.matcher(read(root.resolve(scene)));
+            while (m.find()) {
+                Path mesh = root.relativize(root.resolve(scene).getParent().resolve(m.group(1)).normalize());
+                if (Files.isRegularFile(root.resolve(mesh)) && !named.contains(mesh)) {
+                    named.add(mesh);
+                }
+            }
+            meshes.put(scene, Collections.unmodifiableList(named));
+        }
+        return new Corpus(root, Collections.unmodifiableList(scenes), meshes);
+    }
+
+    /** The original bytes of a corpus file. */
+    byte[] original(Path relative) {
+        try {
+            return Files.readAllBytes(root.resolve(relative));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** Copies the scenes and meshes (not the reference renders) into {@code folder}, for one worker to damage. */
+    void copyTo(Path folder) {
+        try (Stream<Path> files = Files.walk(root)) {
+            for (Path file : (Iterable<Path>) files::iterator) {
+                Path relative = root.relativize(file);
+                if (!Files.isRegularFile(file) || relative.startsWith("reference")) {
+                    continue;
+                }
+                Path copy = folder.resolve(relative.toString());
+                Files.createDirectories(copy.getParent());
+                Files.copy(file, copy);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private static String read(Path file) {
+        try {
+            return Files.readString(file);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+}

@@ -1,0 +1,111 @@
+package ray.fuzz;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+
+/**
+ * The seeded mutational fuzzer: runs cases 0 … n−1 of a seed over the corpus on a number of
+ * workers, each in its own copy of the scenes, and gathers a {@link FuzzSummary}. A case that has
+ * not ended after {@link #CASE_SECONDS} is a hang; the worker that ran it stops there (its thread
+ * may never return), and the others go on.
+ */
+final class Fuzzer {
+    /** A case renders a 4×4 window in milliseconds; this long means the framework is stuck. */
+    static final int CASE_SECONDS = 30;
+
+    private final Corpus corpus;
+    private final Path work;
+    private final long seed;
+    private final int workers;
+    /** Where the damaged files of failed cases are kept for replay (null: not kept). */
+    private final Path failures;
+
+    Fuzzer(Corpus corpus, Path work, long seed, int workers, Path failures) {
+        this.corpus = corpus;
+        this.work = work;
+        this.seed = seed;
+        this.workers = workers;
+        this.failures = failures;
+    }
+
+    FuzzSummary run(long cases) throws InterruptedException {
+        FuzzSummary summary = new FuzzSummary(seed, cases, workers);
+        long start = System.nanoTime();
+        List<Thread> threads = new ArrayList<>();
+        for (int w = 0; w < workers; w++) {
+            int worker = w;
+            Thread t = new Thread(() -> work(worker, cases, summary), "fuzz-" + w);
+            t.start();
+            threads.add(t);
+        }
+        for (Thread t : threads) {
+            t.join();
+        }
+        summary.finish(System.nanoTime() - start);
+        return summary;
+    }
+
+    private void work(int worker, long cases, FuzzSummary summary) {
+        Path folder = work.resolve("worker-" + worker);
+        corpus.copyTo(folder);
+        CaseRunner runner = new CaseRunner(corpus, folder);
+        ExecutorService executor = Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "fuzz-case-" + worker);
+            t.setDaemon(true);
+            return t;
+        });
+        try {
+            for (long i = worker; i < cases; i += workers) {
+                FuzzCase c = FuzzCase.of(corpus, seed, i);
+                Future<Outcome> future = executor.submit(() -> runner.run(c));
+                Outcome outcome;
+                try {
+                    outcome = future.get(CASE_SECONDS, TimeUnit.SECONDS);
+                } catch (TimeoutException e) {
+                    future.cancel(true);
+                    outcome = Outcome.failed("no result after " + CASE_SECONDS + " s (a hang)", TimeUnit.SECONDS.toNanos(CASE_SECONDS));
+                    record(summary, c, outcome);
+                    summary.abandoned(worker, i);
+                    return;
+                } catch (ExecutionException e) {
+                    outcome = Outcome.failed("the case runner threw " + CaseRunner.describe(e.getCause()), 0);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
+                record(summary, c, outcome);
+            }
+        } finally {
+            executor.shutdownNow();
+        }
+    }
+
+    private void record(FuzzSummary summary, FuzzCase c, Outcome outcome) {
+        boolean unchanged = java.util.Arrays.equals(CaseRunner.damaged(corpus, c), corpus.original(c.target));
+        summary.add(c, outcome, unchanged);
+        if (outcome.kind == Outcome.Kind.FAILED && failures != null) {
+            keep(c);
+        }
+    }
+
+    /** Writes the damaged file of a failed case under failures/case-N/, at its path in the corpus. */
+    private void keep(FuzzCase c) {
+        try {
+            Path copy = failures.resolve("case-" + c.index).resolve(c.target.toString());
+            Files.createDirectories(copy.getParent());
+            Files.write(copy, CaseRunner.damaged(corpus, c));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+}
