@@ -6,10 +6,31 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import javax.imageio.ImageIO;
 
 /** Writes an image as an 8-bit sRGB-less PNG (gamma 2.2 encoded by {@link ToneMap}), atomically. */
 public final class PngWriter {
+    /**
+     * Temporary files being written. Ctrl-C (SIGINT) or a kill (SIGTERM) ends the JVM without running
+     * the writing thread's finally block, but it does run shutdown hooks: the hook removes these.
+     * After SIGKILL or a power cut a hidden ".NAME.png*.tmp" may stay; the target is whole either way.
+     */
+    private static final Set<Path> IN_FLIGHT = ConcurrentHashMap.newKeySet();
+
+    static {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            for (Path temporary : IN_FLIGHT) {
+                try {
+                    Files.deleteIfExists(temporary);
+                } catch (IOException e) {
+                    // The JVM is ending; a leftover hidden temporary is all that can go wrong.
+                }
+            }
+        }, "png-writer-cleanup"));
+    }
+
     private PngWriter() {
     }
 
@@ -41,6 +62,7 @@ public final class PngWriter {
         Path folder = target.toAbsolutePath().getParent();
         Files.createDirectories(folder);
         Path temporary = Files.createTempFile(folder, "." + target.getFileName(), ".tmp");
+        IN_FLIGHT.add(temporary);
         try {
             if (!ImageIO.write(picture, "png", temporary.toFile())) {
                 throw new IOException("no PNG writer is available");
@@ -52,6 +74,7 @@ public final class PngWriter {
             }
         } finally {
             Files.deleteIfExists(temporary);
+            IN_FLIGHT.remove(temporary);
         }
     }
 }
