@@ -35,6 +35,8 @@ public class GraderTest {
             .filter(p -> p.endsWith(".jar")).collect(Collectors.joining(File.pathSeparator));
     private static final String SPHERE = "src/main/java/ray/surface/Sphere.java";
     private static final String GROUP = "src/main/java/ray/surface/Group.java";
+    private static final String ORTHOGRAPHIC = "src/main/java/ray/camera/OrthographicCamera.java";
+    private static final String TRIANGLE = "src/main/java/ray/surface/Triangle.java";
 
     @SuppressWarnings("unchecked")
     private static Map<String, Object> grade(Path submission, String name) throws Exception {
@@ -121,6 +123,73 @@ public class GraderTest {
         String output = (String) results.get("output");
         assertTrue(output, output.contains("does not compile"));
         assertTrue(output, output.contains("src/main/java/ray/surface/Sphere.java:") && output.contains("';' expected"));
+    }
+
+    /**
+     * A submission with a bug of each kind in the student's own code: an orthographic camera that
+     * throws, a sphere that allocates without bound when the ray starts inside it, a triangle that
+     * reports a hit at t = NaN for rays with a positive z direction, and a group that loops forever
+     * when it is empty. (A System.exit is the test above.) Grading completes with a valid
+     * results.json, each bug costs tests of its own task only, and each failure says what happened.
+     */
+    @Test(timeout = 900_000)
+    @SuppressWarnings("unchecked")
+    public void throwingLoopingHoardingAndNaNCodeCostsOnlyTheTestsThatReachIt() throws Exception {
+        Path dir = FOLDER.getRoot().toPath().resolve("misbehaving");
+        for (String file : StudentFiles.in(PROJECT).keySet()) {
+            String source = Files.readString(PROJECT.resolve(file), StandardCharsets.UTF_8);
+            if (file.equals(ORTHOGRAPHIC)) {
+                source = insertAfter(source, "// BEGIN SOLUTION\n",
+                        "        if (imageU == imageU) {\n            throw new IllegalStateException(\"a student's bug\");\n        }\n");
+            } else if (file.equals(SPHERE)) {
+                source = insertAfter(source, "Vec3 f = ray.origin.minus(center);\n", "        if (f.dot(f) < radius * radius) {\n"
+                        + "            java.util.List<long[]> hoard = new java.util.ArrayList<>();\n"
+                        + "            while (true) {\n                hoard.add(new long[1 << 20]);\n            }\n        }\n");
+            } else if (file.equals(TRIANGLE)) {
+                source = insertAfter(source, "// BEGIN SOLUTION\n", "        if (ray.direction.z > 0) {\n"
+                        + "            out.t = Double.NaN;\n            out.surface = this;\n            return true;\n        }\n");
+            } else if (file.equals(GROUP)) {
+                source = insertAfter(source, "// BEGIN SOLUTION\n", "        while (surfaces.isEmpty()) {\n"
+                        + "            Thread.onSpinWait();\n        }\n");
+            }
+            Path copy = dir.resolve(file);
+            Files.createDirectories(copy.getParent());
+            Files.writeString(copy, source, StandardCharsets.UTF_8);
+        }
+        Map<String, Object> results = grade(dir, "misbehaving");
+
+        double score = 0;
+        Map<Integer, int[]> passedAndFailed = new java.util.TreeMap<>();
+        Map<Integer, String> failures = new java.util.TreeMap<>();
+        for (Map<String, Object> t : (List<Map<String, Object>>) results.get("tests")) {
+            int task = Integer.parseInt(((String) t.get("number")).split("\\.")[0]);
+            boolean passed = "passed".equals(t.get("status"));
+            passedAndFailed.computeIfAbsent(task, k -> new int[2])[passed ? 0 : 1]++;
+            if (!passed) {
+                failures.merge(task, (String) t.get("output") + "\n", String::concat);
+            }
+            score += (Double) t.get("score");
+        }
+        assertEquals("the score is the sum of the tests' scores", score, (Double) results.get("score"), 1e-9);
+        for (int task = 1; task <= 4; task++) {
+            assertTrue("task " + task + " loses some tests: " + passedAndFailed, passedAndFailed.get(task)[1] > 0);
+            assertTrue("task " + task + " keeps the tests its bug does not reach: " + passedAndFailed,
+                    passedAndFailed.get(task)[0] > 0);
+        }
+        assertTrue(failures.get(1), failures.get(1).contains("your code threw java.lang.IllegalStateException: a student's bug"
+                + " at OrthographicCamera.java:"));
+        assertTrue(failures.get(2), failures.get(2).contains("your code threw java.lang.OutOfMemoryError"));
+        assertTrue(failures.get(3), failures.get(3).contains("NaN"));
+        assertTrue(failures.get(4), failures.get(4).contains("took longer than 10 s: is there a loop that never ends?"));
+        for (int task = 1; task <= 4; task++) {
+            assertTrue("no other task's bug shows in task " + task, !failures.get(task).contains("[Task " + (task % 4 + 1)));
+        }
+    }
+
+    private static String insertAfter(String source, String anchor, String inserted) {
+        int at = source.indexOf(anchor);
+        assertTrue("anchor " + anchor, at >= 0);
+        return source.substring(0, at + anchor.length()) + inserted + source.substring(at + anchor.length());
     }
 
     private static void put(ZipOutputStream z, String name, String text) throws Exception {
