@@ -68,9 +68,9 @@ public final class AccuracyCommand implements Callable<Integer> {
         PixelWindow part = checkOptions();
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        if (Files.exists(output.resolve(RenderCommand.REFERENCE_MARKER))) {
-            err.println("error: " + output + " holds the reference images (it has a " + RenderCommand.REFERENCE_MARKER
-                    + " file); write the report somewhere else, e.g. -o build/accuracy");
+        String outputProblem = OptionChecks.outputFolderProblem(output, "write the report somewhere else, e.g. -o build/accuracy");
+        if (outputProblem != null) {
+            err.println("error: " + outputProblem);
             return 1;
         }
         List<Path> files = SceneArguments.expand(scenes);

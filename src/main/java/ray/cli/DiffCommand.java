@@ -42,6 +42,10 @@ public final class DiffCommand implements Callable<Integer> {
             description = "Also write a heat map: black where equal, blue within the tolerance, red to yellow to white beyond it.")
     Path heatMap;
 
+    /** Read by {@link Ray1Command}'s handler of unexpected failures: this command reports its own errors in one line. */
+    @Option(names = "--verbose", description = "Show the stack trace of unexpected failures.")
+    boolean verbose;
+
     @Spec
     CommandSpec spec;
 

@@ -1,5 +1,7 @@
 package ray.cli;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import picocli.CommandLine;
 import ray.scene.Limits;
 
@@ -24,5 +26,19 @@ final class OptionChecks {
         if (value != null && Limits.samplesProblem(value) != null) {
             throw new CommandLine.ParameterException(cl, option + " must be at most " + Limits.MAX_SAMPLES + ", got " + value);
         }
+    }
+
+    /**
+     * Why files may not be written into {@code output}, or null: it is a file, or it holds the reference
+     * images (marked by {@link RenderCommand#REFERENCE_MARKER}), which only {@code gradle references} may write.
+     */
+    static String outputFolderProblem(Path output, String elsewhere) {
+        if (Files.exists(output) && !Files.isDirectory(output)) {
+            return output + " is a file; expected a folder (-o DIR)";
+        }
+        if (Files.exists(output.resolve(RenderCommand.REFERENCE_MARKER))) {
+            return output + " holds the reference images (it has a " + RenderCommand.REFERENCE_MARKER + " file); " + elsewhere;
+        }
+        return null;
     }
 }

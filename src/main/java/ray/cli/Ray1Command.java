@@ -26,9 +26,13 @@ public final class Ray1Command implements Runnable {
         CommandLine commandLine = new CommandLine(new Ray1Command());
         commandLine.setOut(out);
         commandLine.setErr(err);
-        // A failure that escapes a command is reported in one line, not as a stack trace.
+        // A failure that escapes a command is reported in one line, and its stack trace only on request.
+        boolean verbose = java.util.Arrays.asList(args).contains("--verbose");
         commandLine.setExecutionExceptionHandler((e, cl, parseResult) -> {
             cl.getErr().println("error: " + Errors.oneLine(e));
+            if (verbose) {
+                e.printStackTrace(cl.getErr());
+            }
             return 1;
         });
         return commandLine.execute(args);

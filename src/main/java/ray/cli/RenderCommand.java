@@ -69,9 +69,9 @@ public final class RenderCommand implements Callable<Integer> {
         OptionChecks.atLeastOne(spec.commandLine(), "--threads", threads);
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        if (Files.exists(output.resolve(REFERENCE_MARKER))) {
-            err.println("error: " + output + " holds the reference images (it has a " + REFERENCE_MARKER
-                    + " file); render somewhere else, e.g. -o out");
+        String outputProblem = OptionChecks.outputFolderProblem(output, "render somewhere else, e.g. -o out");
+        if (outputProblem != null) {
+            err.println("error: " + outputProblem);
             return 1;
         }
         List<Path> files = SceneArguments.expand(scenes);
