@@ -76,7 +76,7 @@ public final class ObjReader {
                 break;
             case "vt":
                 if (words.length < 2) {
-                    throw error("'vt' needs at least one coordinate; expected vt u [v [w]]");
+                    throw error("'vt' has no coordinates; expected vt u [v [w]]");
                 }
                 texCoordCount++;
                 break;
@@ -92,7 +92,9 @@ public final class ObjReader {
     private void readVector(String[] words, DoubleStream.Builder into, String form) {
         // "v x y z w" is allowed by the format (w is a weight we ignore); so are vertex colors after xyz.
         if (words.length < 4) {
-            throw error("'" + words[0] + "' needs 3 numbers; expected " + form);
+            int n = words.length - 1;
+            throw error("'" + words[0] + "' has " + (n == 0 ? "no numbers" : n == 1 ? "1 number" : n + " numbers")
+                    + "; expected " + form);
         }
         for (int i = 1; i <= 3; i++) {
             into.add(parseNumber(words[i], form));
@@ -100,21 +102,23 @@ public final class ObjReader {
     }
 
     private double parseNumber(String word, String form) {
+        double value;
         try {
-            double value = Double.parseDouble(word);
-            if (Double.isFinite(value)) {
-                return value;
-            }
+            value = Double.parseDouble(word);
         } catch (NumberFormatException e) {
-            // reported below
+            throw error("\"" + SceneException.excerpt(word) + "\" is not a number; expected " + form);
         }
-        throw error("\"" + word + "\" is not a finite number; expected " + form);
+        if (!Double.isFinite(value)) {
+            throw error("\"" + SceneException.excerpt(word) + "\" is not a finite number; expected " + form);
+        }
+        return value;
     }
 
     private void readFace(String[] words) {
         int corners = words.length - 1;
         if (corners < 3) {
-            throw error("a face needs at least 3 vertices, got " + corners);
+            throw error("the face has " + (corners == 0 ? "no vertices" : corners == 1 ? "1 vertex" : corners + " vertices")
+                    + "; expected at least 3: f v1 v2 v3 ...");
         }
         int[] vertex = new int[corners];
         int[] normal = new int[corners];
@@ -122,7 +126,8 @@ public final class ObjReader {
         for (int i = 0; i < corners; i++) {
             String[] parts = words[i + 1].split("/", -1);
             if (parts.length > 3 || parts[0].isEmpty()) {
-                throw error("\"" + words[i + 1] + "\" is not a face vertex; expected v, v/vt, v//vn or v/vt/vn");
+                throw error("\"" + SceneException.excerpt(words[i + 1])
+                        + "\" is not a face vertex; expected v, v/vt, v//vn or v/vt/vn");
             }
             vertex[i] = index(parts[0], vertexCount, "vertex");
             if (parts.length >= 2 && !parts[1].isEmpty()) {
@@ -153,7 +158,7 @@ public final class ObjReader {
         try {
             i = Integer.parseInt(word);
         } catch (NumberFormatException e) {
-            throw error("\"" + word + "\" is not a " + what + " index; expected an integer");
+            throw error("\"" + SceneException.excerpt(word) + "\" is not a " + what + " index; expected an integer");
         }
         int zeroBased = i > 0 ? i - 1 : count + i;
         if (i == 0 || zeroBased < 0 || zeroBased >= count) {
