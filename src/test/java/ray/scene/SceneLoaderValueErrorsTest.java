@@ -8,8 +8,9 @@ import org.junit.rules.TemporaryFolder;
 /**
  * Checks errors in values: the wrong number of values, words and special values where numbers
  * belong, fractions where integers belong, values out of range (radius, image size, samples,
- * exposure, view size, camera axes, box corners, scale), and a scene without a camera or an image
- * size. Each error is checked whole: the file, line and column, what is wrong and what was expected.
+ * exposure, view size, projection distance, camera axes, box corners, scale), a mesh without its
+ * file, and a scene without a camera or an image size. Each error is checked whole: the file, line
+ * and column, what is wrong and what was expected.
  *
  * <p>SAX locates an element where its start tag ends, so an element's column is the one just after
  * its {@code >} (for {@code "    <radius>"}, column 13); each element sits on its own line.
@@ -55,6 +56,15 @@ public class SceneLoaderValueErrorsTest {
         for (String word : new String[] {"abc", "NaN", "Infinity", "-Infinity", "0x10", "1d", "1,5"}) {
             SceneException e = loadSphereError("    <radius>" + word + "</radius>\n");
             SceneFixtures.assertError(e, bad(), 5, 13, "\"" + word + "\" in <radius> is not a number; expected a number");
+        }
+    }
+
+    @Test
+    public void specialValuesInAVectorAreNotNumbers() {
+        for (String word : new String[] {"NaN", "Infinity", "-Infinity", "inf"}) {
+            SceneException e = loadSphereError("    <center>0 " + word + " 0</center>\n");
+            SceneFixtures.assertError(e, bad(), 5, 13,
+                    "\"" + word + "\" in <center> is not a number; expected " + THREE_CENTER_NUMBERS);
         }
     }
 
@@ -118,6 +128,17 @@ public class SceneLoaderValueErrorsTest {
     }
 
     @Test
+    public void negativeImageSizeIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>-4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 10, "image size is -4 3; expected two positive integers");
+    }
+
+    @Test
     public void zeroSamplesIsInvalid() {
         SceneException e = loadError("""
                 <scene>
@@ -127,6 +148,18 @@ public class SceneLoaderValueErrorsTest {
                 </scene>
                 """);
         SceneFixtures.assertError(e, bad(), 4, 12, "samples is 0; expected a positive integer");
+    }
+
+    @Test
+    public void negativeSamplesIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <samples>-2</samples>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 12, "samples is -2; expected a positive integer");
     }
 
     @Test
@@ -152,6 +185,35 @@ public class SceneLoaderValueErrorsTest {
                 </scene>
                 """);
         SceneFixtures.assertError(e, bad(), 3, 16, "viewWidth is 0.0; expected a positive number");
+    }
+
+    @Test
+    public void zeroViewHeightIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="OrthographicCamera">
+                    <viewHeight>0</viewHeight>
+                  </camera>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 17, "viewHeight is 0.0; expected a positive number");
+    }
+
+    @Test
+    public void zeroAndNegativeProjDistanceAreInvalid() {
+        for (String distance : new String[] {"0", "-1.5"}) {
+            SceneException e = loadError("""
+                    <scene>
+                      <camera type="PerspectiveCamera">
+                        <projDistance>%s</projDistance>
+                      </camera>
+                      <image>4 3</image>
+                    </scene>
+                    """.formatted(distance));
+            SceneFixtures.assertError(e, bad(), 3, 19,
+                    "projDistance is " + Double.parseDouble(distance) + "; expected a positive number");
+        }
     }
 
     @Test
@@ -182,6 +244,20 @@ public class SceneLoaderValueErrorsTest {
                 """);
         SceneFixtures.assertError(e, bad(), 2, 37, "invalid OrthographicCamera: viewUp (0.0, 0.0, 2.0) is parallel to"
                 + " viewDir (0.0, 0.0, -1.0); expected a viewUp that is not parallel to viewDir");
+    }
+
+    @Test
+    public void zeroViewUpIsReportedAtItsCamera() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera">
+                    <viewUp>0 0 0</viewUp>
+                  </camera>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 2, 36,
+                "invalid PerspectiveCamera: viewUp is (0.0, 0.0, 0.0); expected a nonzero vector not parallel to viewDir");
     }
 
     @Test
@@ -228,6 +304,20 @@ public class SceneLoaderValueErrorsTest {
                 </scene>
                 """);
         SceneFixtures.assertError(e, bad(), 5, 11, "<data> is empty; expected a file path");
+    }
+
+    @Test
+    public void meshWithoutDataAsksForIt() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Mesh">
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 24,
+                "invalid Mesh: no <data> is given; expected <data> with the path of an OBJ file");
     }
 
     @Test
