@@ -4,7 +4,6 @@ import java.io.BufferedReader;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.stream.DoubleStream;
 import java.util.stream.IntStream;
@@ -18,6 +17,7 @@ import ray.surface.MeshData;
  * Errors name the OBJ file and its own line number.
  */
 public final class ObjReader {
+    private static final String KIND = "an OBJ file";
     private final Path file;
     // Primitive builders, so that a large mesh does not box a value per coordinate.
     private final DoubleStream.Builder positions = DoubleStream.builder();
@@ -40,19 +40,21 @@ public final class ObjReader {
     }
 
     private MeshData readAll() {
+        FileProblems.checkIsFile(file, KIND);
         try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
             String line;
             while ((line = in.readLine()) != null) {
                 lineNumber++;
                 parseLine(line);
             }
-        } catch (NoSuchFileException e) {
-            throw new SceneException(file, 1, 1, "no such mesh file");
         } catch (IOException e) {
-            throw new SceneException(file, Math.max(1, lineNumber), 1, "cannot read the mesh file (" + e.getMessage() + ")");
+            throw FileProblems.cannotRead(file, e, KIND);
+        }
+        if (lineNumber == 0) {
+            throw new SceneException(file, 1, 1, "the mesh file is empty; expected 'v' and 'f' lines");
         }
         if (triangleCount == 0) {
-            throw new SceneException(file, Math.max(1, lineNumber), 1, "the mesh has no faces; expected at least one 'f' line");
+            throw error("the mesh has no faces; expected at least one 'f' line");
         }
         return new MeshData(file, positions.build().toArray(), normals.build().toArray(), triangles.build().toArray(),
                 anyNormals ? triangleNormals.build().toArray() : null);
@@ -173,6 +175,6 @@ public final class ObjReader {
     }
 
     private SceneException error(String problem) {
-        return new SceneException(file, lineNumber, 1, problem);
+        return new SceneException(file, Math.max(1, lineNumber), 1, problem);
     }
 }

@@ -3,8 +3,6 @@ package ray.scene;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.Deque;
@@ -42,14 +40,7 @@ final class PositionalXml {
     }
 
     static Document read(Path file) {
-        byte[] bytes;
-        try {
-            bytes = Files.readAllBytes(file);
-        } catch (NoSuchFileException e) {
-            throw new SceneException(file, 1, 1, "no such file");
-        } catch (IOException e) {
-            throw new SceneException(file, 1, 1, "cannot read the file (" + e.getMessage() + ")");
-        }
+        byte[] bytes = FileProblems.readAllBytes(file, "a scene file");
         Document document;
         SAXParser parser;
         try {

@@ -170,10 +170,17 @@ public final class SceneLoader {
         }
         if (types.length == 1 && types[0] == MeshData.class) {
             Path mesh = resolve(property, text);
-            // Checked here so that the error points at the scene line that names the file.
-            if (!Files.isRegularFile(mesh)) {
+            // Checked here so that the error points at the scene line that names the file; errors in
+            // the file itself (empty, unreadable, bad lines) point into the file.
+            if (!Files.exists(mesh)) {
                 throw error(property, "no such mesh file " + mesh + "; expected an OBJ file (a relative path in <"
                         + property.getTagName() + "> starts from the scene file's folder)");
+            }
+            if (Files.isDirectory(mesh)) {
+                throw error(property, "the mesh path " + mesh + " is a folder; expected an OBJ file");
+            }
+            if (!Files.isRegularFile(mesh)) {
+                throw error(property, "the mesh path " + mesh + " is not a regular file; expected an OBJ file");
             }
             return new Object[] {ObjReader.read(mesh)};
         }

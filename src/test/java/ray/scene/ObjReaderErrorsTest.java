@@ -2,6 +2,8 @@ package ray.scene;
 
 import static org.junit.Assert.assertThrows;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.Rule;
 import org.junit.Test;
@@ -11,7 +13,7 @@ import org.junit.rules.TemporaryFolder;
  * Checks that a bad OBJ file raises a {@link SceneException} naming the OBJ file and its own line
  * number (column 1: OBJ statements are one per line), with the problem and what was expected, each
  * message checked whole: words and special values where numbers belong, too few values, indices
- * out of range, faces with fewer than 3 vertices, and files that are missing or empty.
+ * out of range, faces with fewer than 3 vertices, and files that are missing, folders or empty.
  */
 public class ObjReaderErrorsTest {
     @Rule
@@ -136,8 +138,8 @@ public class ObjReaderErrorsTest {
     }
 
     @Test
-    public void emptyFileHasNoFaces() {
-        assertObjError("", 1, "the mesh has no faces; expected at least one 'f' line");
+    public void emptyFileIsReportedAsEmpty() {
+        assertObjError("", 1, "the mesh file is empty; expected 'v' and 'f' lines");
     }
 
     @Test
@@ -159,7 +161,14 @@ public class ObjReaderErrorsTest {
     public void missingFileIsReportedWithItsName() {
         Path missing = folder.getRoot().toPath().resolve("missing.obj");
         SceneException e = assertThrows(SceneException.class, () -> ObjReader.read(missing));
-        SceneFixtures.assertError(e, missing, 1, 1, "no such mesh file");
+        SceneFixtures.assertError(e, missing, 1, 1, "no such file; expected the path of an OBJ file");
+    }
+
+    @Test
+    public void folderIsNotAnObjFile() throws IOException {
+        Path meshes = Files.createDirectories(folder.getRoot().toPath().resolve("meshes"));
+        SceneException e = assertThrows(SceneException.class, () -> ObjReader.read(meshes));
+        SceneFixtures.assertError(e, meshes, 1, 1, "this is a folder; expected an OBJ file");
     }
 
     /** Checks that reading {@code obj} fails at {@code line}, column 1, of that file, with exactly {@code problem}. */

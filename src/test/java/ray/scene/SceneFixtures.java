@@ -8,6 +8,8 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Set;
+import org.junit.Assume;
 import org.junit.rules.TemporaryFolder;
 import ray.IntersectionRecord;
 import ray.Ray;
@@ -34,6 +36,20 @@ final class SceneFixtures {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    /**
+     * Takes every permission away from {@code file}, and skips the calling test (an assumption
+     * failure) where that does not stop this process from reading it: for root, or on a file system
+     * without POSIX permissions.
+     */
+    static void makeUnreadable(Path file) {
+        try {
+            Files.setPosixFilePermissions(file, Set.of());
+        } catch (UnsupportedOperationException | IOException e) {
+            Assume.assumeNoException("no POSIX permissions here", e);
+        }
+        Assume.assumeFalse("this user (root?) can read a file without permissions", Files.isReadable(file));
     }
 
     /** Loads a scene whose {@code <scene>} holds a camera, an image size and then {@code body}. */

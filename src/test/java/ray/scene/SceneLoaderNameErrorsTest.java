@@ -1,5 +1,6 @@
 package ray.scene;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.Rule;
 import org.junit.Test;
@@ -8,7 +9,7 @@ import org.junit.rules.TemporaryFolder;
 /**
  * Checks errors in names: unknown elements, types and attributes (with a "did you mean" when a known
  * name is close), a missing type, refs that name nothing, something later or the wrong kind of
- * object, a name used twice, and a mesh file that is missing or holds an error. Each
+ * object, a name used twice, and mesh files that are missing, folders, empty or unreadable. Each
  * error is checked whole: the file, line and column, what is wrong and what was expected.
  *
  * <p>SAX locates an element where its start tag ends, so an element's column is the one just after
@@ -339,6 +340,43 @@ public class SceneLoaderNameErrorsTest {
         SceneException e = SceneFixtures.loadError(scene);
         SceneFixtures.assertError(e, obj.toAbsolutePath().normalize(), 3, 1,
                 "vertex index 3 is out of range; expected 1 to 2 or -1 to -2 (2 defined so far)");
+    }
+
+    @Test
+    public void meshPathThatIsAFolderIsReportedAtItsDataElement() throws Exception {
+        Path meshes = Files.createDirectories(folder.getRoot().toPath().resolve("meshes"));
+        Path scene = meshScene("meshes");
+        SceneFixtures.assertError(SceneFixtures.loadError(scene), scene, 5, 11,
+                "the mesh path " + meshes.toAbsolutePath() + " is a folder; expected an OBJ file");
+    }
+
+    @Test
+    public void emptyMeshFileIsReportedInThatFile() {
+        Path obj = SceneFixtures.write(folder, "empty.obj", "");
+        SceneException e = SceneFixtures.loadError(meshScene("empty.obj"));
+        SceneFixtures.assertError(e, obj.toAbsolutePath(), 1, 1, "the mesh file is empty; expected 'v' and 'f' lines");
+    }
+
+    @Test
+    public void unreadableMeshFileIsReportedInThatFile() {
+        Path obj = SceneFixtures.write(folder, "locked.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        SceneFixtures.makeUnreadable(obj);
+        SceneException e = SceneFixtures.loadError(meshScene("locked.obj"));
+        SceneFixtures.assertError(e, obj.toAbsolutePath(), 1, 1,
+                "the file cannot be read (permission denied); expected a readable OBJ file");
+    }
+
+    /** A scene file, mesh.xml, whose line 5 is {@code <data>dataText</data>} in a Mesh. */
+    private Path meshScene(String dataText) {
+        return SceneFixtures.write(folder, "mesh.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Mesh">
+                    <data>%s</data>
+                  </surface>
+                </scene>
+                """.formatted(dataText));
     }
 
     private Path bad() {

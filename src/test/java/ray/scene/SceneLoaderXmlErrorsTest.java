@@ -2,6 +2,7 @@ package ray.scene;
 
 import static org.junit.Assert.assertFalse;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.Rule;
 import org.junit.Test;
@@ -9,7 +10,7 @@ import org.junit.rules.TemporaryFolder;
 
 /**
  * Checks errors in the XML itself: malformed markup, the wrong root, text where elements belong,
- * missing or empty files, and the refusal of any DOCTYPE (so no entity can
+ * missing, empty or unreadable files and folders, and the refusal of any DOCTYPE (so no entity can
  * expand without bound or read a local file). Each error is checked whole: the file, the line and
  * column, the problem and what was expected.
  *
@@ -115,7 +116,21 @@ public class SceneLoaderXmlErrorsTest {
     @Test
     public void missingFileIsReportedWithItsName() {
         Path file = folder.getRoot().toPath().resolve("nowhere.xml");
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1, "no such file");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1, "no such file; expected the path of a scene file");
+    }
+
+    @Test
+    public void folderIsNotASceneFile() throws Exception {
+        Path scenes = Files.createDirectories(folder.getRoot().toPath().resolve("scenes.xml"));
+        SceneFixtures.assertError(SceneFixtures.loadError(scenes), scenes, 1, 1, "this is a folder; expected a scene file");
+    }
+
+    @Test
+    public void unreadableFileIsReportedAsSuch() throws Exception {
+        Path file = SceneFixtures.write(folder, "locked.xml", "<scene/>\n");
+        SceneFixtures.makeUnreadable(file);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1,
+                "the file cannot be read (permission denied); expected a readable scene file");
     }
 
     @Test
