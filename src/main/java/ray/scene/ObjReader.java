@@ -2,9 +2,13 @@ package ray.scene;
 
 import java.io.BufferedReader;
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CoderResult;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.stream.DoubleStream;
 import java.util.stream.IntStream;
 import ray.surface.MeshData;
@@ -14,10 +18,13 @@ import ray.surface.MeshData;
  * every index form ({@code 1}, {@code 1/2}, {@code 1//3}, {@code 1/2/3}, negative indices counting
  * back from the latest vertex). Polygons are split into fans around their first vertex. Grouping,
  * smoothing and material statements ({@code o g s usemtl mtllib}) and comments are ignored.
+ * The file is UTF-8 text (a byte order mark is skipped); its comments may hold any bytes.
  * Errors name the OBJ file and its own line number.
  */
 public final class ObjReader {
     private static final String KIND = "an OBJ file";
+    /** The UTF-8 byte order mark, EF BB BF, as Latin-1 characters. */
+    private static final String UTF8_BYTE_ORDER_MARK = "\u00EF\u00BB\u00BF";
     private final Path file;
     // Primitive builders, so that a large mesh does not box a value per coordinate.
     private final DoubleStream.Builder positions = DoubleStream.builder();
@@ -41,11 +48,13 @@ public final class ObjReader {
 
     private MeshData readAll() {
         FileProblems.checkIsFile(file, KIND);
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+        // Read byte for byte (every byte is a Latin-1 character), so that no byte can stop the reading
+        // with a decoder's exception; statement() then checks that each statement is UTF-8 text.
+        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
             String line;
             while ((line = in.readLine()) != null) {
                 lineNumber++;
-                parseLine(line);
+                parseLine(statement(line));
             }
         } catch (IOException e) {
             throw FileProblems.cannotRead(file, e, KIND);
@@ -60,9 +69,33 @@ public final class ObjReader {
                 anyNormals ? triangleNormals.build().toArray() : null);
     }
 
-    private void parseLine(String raw) {
-        int hash = raw.indexOf('#');
-        String line = (hash >= 0 ? raw.substring(0, hash) : raw).strip();
+    /**
+     * The statement on a line read as Latin-1 bytes: without its comment (a '#' byte, which is never
+     * part of a longer UTF-8 character) and decoded as UTF-8. A comment may hold any bytes; a
+     * statement that is not UTF-8 text is an error.
+     */
+    private String statement(String latin1) {
+        int hash = latin1.indexOf('#');
+        String s = hash >= 0 ? latin1.substring(0, hash) : latin1;
+        if (lineNumber == 1 && s.startsWith(UTF8_BYTE_ORDER_MARK)) {
+            s = s.substring(UTF8_BYTE_ORDER_MARK.length());
+        }
+        boolean ascii = s.chars().allMatch(c -> c < 0x80);
+        if (ascii) {
+            return s;
+        }
+        ByteBuffer bytes = ByteBuffer.wrap(s.getBytes(StandardCharsets.ISO_8859_1));
+        CharBuffer chars = CharBuffer.allocate(bytes.remaining());
+        CoderResult result = StandardCharsets.UTF_8.newDecoder().decode(bytes, chars, true);
+        if (result.isError()) {
+            int bad = bytes.get(bytes.position()) & 0xFF;
+            throw error(String.format(Locale.ROOT, "byte 0x%02X is not UTF-8 text; expected OBJ text in UTF-8 (or ASCII)", bad));
+        }
+        return chars.flip().toString();
+    }
+
+    private void parseLine(String statement) {
+        String line = statement.strip();
         if (line.isEmpty()) {
             return;
         }

@@ -2,7 +2,10 @@ package ray.scene;
 
 import static org.junit.Assert.assertThrows;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.Rule;
@@ -12,10 +15,13 @@ import org.junit.rules.TemporaryFolder;
 /**
  * Checks that a bad OBJ file raises a {@link SceneException} naming the OBJ file and its own line
  * number (column 1: OBJ statements are one per line), with the problem and what was expected, each
- * message checked whole: words and special values where numbers belong, too few values, indices
- * out of range, faces with fewer than 3 vertices, and files that are missing, folders or empty.
+ * message checked whole: words, special values and bytes that are not UTF-8 text where numbers
+ * belong, too few values, indices out of range, faces with fewer than 3 vertices, files that are
+ * missing, folders or empty.
  */
 public class ObjReaderErrorsTest {
+    private static final String NOT_UTF8 = " is not UTF-8 text; expected OBJ text in UTF-8 (or ASCII)";
+
     @Rule
     public TemporaryFolder folder = new TemporaryFolder();
 
@@ -158,6 +164,19 @@ public class ObjReaderErrorsTest {
     }
 
     @Test
+    public void bytesThatAreNotUtf8InAStatementAreReportedAtTheirLine() {
+        // 0xFF never occurs in UTF-8 text; a Latin-1 "é" (0xE9) followed by a space is not UTF-8 either.
+        assertObjBytesError(bytes("v 0 0 0\nv 1 ", 0xFF, " 0\n"), 2, "byte 0xFF" + NOT_UTF8);
+        assertObjBytesError(bytes("v 0 0 0\ng caf", 0xE9, " 1\n"), 2, "byte 0xE9" + NOT_UTF8);
+    }
+
+    @Test
+    public void binaryFileIsReportedAtItsFirstLine() {
+        // A PNG file begins with 0x89 "PNG" CR LF.
+        assertObjBytesError(bytes("", 0x89, "PNG\r\n", 0x1A, "\n"), 1, "byte 0x89" + NOT_UTF8);
+    }
+
+    @Test
     public void missingFileIsReportedWithItsName() {
         Path missing = folder.getRoot().toPath().resolve("missing.obj");
         SceneException e = assertThrows(SceneException.class, () -> ObjReader.read(missing));
@@ -173,8 +192,30 @@ public class ObjReaderErrorsTest {
 
     /** Checks that reading {@code obj} fails at {@code line}, column 1, of that file, with exactly {@code problem}. */
     private void assertObjError(String obj, int line, String problem) {
-        Path file = SceneFixtures.write(folder, "mesh.obj", obj);
+        assertObjBytesError(obj.getBytes(StandardCharsets.UTF_8), line, problem);
+    }
+
+    private void assertObjBytesError(byte[] obj, int line, String problem) {
+        Path file = folder.getRoot().toPath().resolve("mesh.obj");
+        try {
+            Files.write(file, obj);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
         SceneException e = assertThrows(SceneException.class, () -> ObjReader.read(file));
         SceneFixtures.assertError(e, file, line, 1, problem);
+    }
+
+    /** The bytes of the pieces in order: each string as ASCII, each Integer as one byte. */
+    static byte[] bytes(Object... pieces) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        for (Object piece : pieces) {
+            if (piece instanceof Integer) {
+                out.write((Integer) piece);
+            } else {
+                out.writeBytes(((String) piece).getBytes(StandardCharsets.US_ASCII));
+            }
+        }
+        return out.toByteArray();
     }
 }
