@@ -255,7 +255,8 @@ public class TraceCommandTest {
     public void missingSceneFileIsAOneLineErrorWithNonZeroStatus() {
         CliRun run = CliRun.of("trace", "scenes/no-such-scene.xml", "1", "1");
         assertNotEquals(run.toString(), 0, run.status);
-        assertEquals(run.toString(), "error: scenes/no-such-scene.xml:1:1: no such file", run.err.strip());
+        assertEquals(run.toString(), "error: scenes/no-such-scene.xml:1:1: no such file; expected the path of a scene file",
+                run.err.strip());
         run.assertNoStackTrace();
     }
 

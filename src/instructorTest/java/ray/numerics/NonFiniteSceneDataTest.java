@@ -192,11 +192,11 @@ public class NonFiniteSceneDataTest {
 
     @Test
     public void settersRefuseWhatTheyCanTellIsBroken() {
-        assertRefused("radius must be a positive number, got NaN", () -> new Sphere(v(0, 0, 0), NAN));
-        assertRefused("radius must be a positive number, got Infinity", () -> new Sphere(v(0, 0, 0), INF));
+        assertRefused("radius is NaN; expected a positive number", () -> new Sphere(v(0, 0, 0), NAN));
+        assertRefused("radius is Infinity; expected a positive number", () -> new Sphere(v(0, 0, 0), INF));
         Box box = new Box();
         box.setMinPt(v(NAN, 0, 0));
-        assertRefused("must be less than maxPt", box::complete);
+        assertRefused("is not below maxPt", box::complete);
         Group scaled = new Group();
         scaled.setScale(v(NAN, 1, 1));
         assertRefused("singular", scaled::complete);

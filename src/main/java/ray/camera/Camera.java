@@ -31,12 +31,20 @@ public abstract class Camera {
     /** Checks the view and computes the basis; called once every property is set. */
     public void complete() {
         if (!(viewDir.lengthSquared() > 0) || !viewDir.isFinite()) {
-            throw new IllegalArgumentException("viewDir must be a nonzero vector, got " + viewDir);
+            throw new IllegalArgumentException("viewDir is " + viewDir + "; expected a nonzero vector");
         }
         w = viewDir.normalized().negate();
         Vec3 side = viewUp.cross(w);
         if (!(side.lengthSquared() > 0) || !side.isFinite()) {
-            throw new IllegalArgumentException("viewUp " + viewUp + " must not be zero or parallel to viewDir " + viewDir);
+            if (!(viewUp.lengthSquared() > 0)) {
+                throw new IllegalArgumentException("viewUp is " + viewUp + "; expected a nonzero vector not parallel to viewDir");
+            }
+            if (side.lengthSquared() == 0) {
+                throw new IllegalArgumentException("viewUp " + viewUp + " is parallel to viewDir " + viewDir
+                        + "; expected a viewUp that is not parallel to viewDir");
+            }
+            // Only a huge viewUp gets here: its cross product with the unit w overflows.
+            throw new IllegalArgumentException("viewUp " + viewUp + " is too large; expected a moderate vector not parallel to viewDir");
         }
         u = side.normalized();
         v = w.cross(u);
@@ -68,7 +76,7 @@ public abstract class Camera {
 
     protected static double requirePositive(String name, double value) {
         if (!(value > 0) || Double.isInfinite(value)) {
-            throw new IllegalArgumentException(name + " must be a positive number, got " + value);
+            throw new IllegalArgumentException(name + " is " + value + "; expected a positive number");
         }
         return value;
     }

@@ -33,10 +33,10 @@ public final class Limits {
     /** Checks an image size, in the words a scene error uses; null when it is within the limits. */
     static String imageSizeProblem(int width, int height) {
         if (width > MAX_IMAGE_SIDE || height > MAX_IMAGE_SIDE) {
-            return "the image size " + width + " " + height + " is too large; expected each side at most " + MAX_IMAGE_SIDE;
+            return "image size " + width + " " + height + " is too large; expected each side at most " + MAX_IMAGE_SIDE;
         }
         if ((long) width * height > MAX_PIXELS) {
-            return "the image size " + width + " " + height + " has " + (long) width * height
+            return "image size " + width + " " + height + " has " + (long) width * height
                     + " pixels; expected at most " + MAX_PIXELS + " (e.g. 4096 4096)";
         }
         return null;
@@ -44,6 +44,6 @@ public final class Limits {
 
     /** Checks a samples-per-pixel count; null when it is within the limit. */
     public static String samplesProblem(int samples) {
-        return samples > MAX_SAMPLES ? samples + " samples per pixel is too many; expected at most " + MAX_SAMPLES : null;
+        return samples > MAX_SAMPLES ? "samples is " + samples + "; expected at most " + MAX_SAMPLES + " per pixel" : null;
     }
 }

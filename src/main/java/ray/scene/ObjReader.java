@@ -2,10 +2,13 @@ package ray.scene;
 
 import java.io.BufferedReader;
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CoderResult;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.stream.DoubleStream;
 import java.util.stream.IntStream;
 import ray.surface.MeshData;
@@ -15,9 +18,13 @@ import ray.surface.MeshData;
  * every index form ({@code 1}, {@code 1/2}, {@code 1//3}, {@code 1/2/3}, negative indices counting
  * back from the latest vertex). Polygons are split into fans around their first vertex. Grouping,
  * smoothing and material statements ({@code o g s usemtl mtllib}) and comments are ignored.
+ * The file is UTF-8 text (a byte order mark is skipped); its comments may hold any bytes.
  * Errors name the OBJ file and its own line number.
  */
 public final class ObjReader {
+    private static final String KIND = "an OBJ file";
+    /** The UTF-8 byte order mark, EF BB BF, as Latin-1 characters. */
+    private static final String UTF8_BYTE_ORDER_MARK = "\u00EF\u00BB\u00BF";
     private final Path file;
     // Primitive builders, so that a large mesh does not box a value per coordinate.
     private final DoubleStream.Builder positions = DoubleStream.builder();
@@ -50,31 +57,59 @@ public final class ObjReader {
     }
 
     private MeshData readAll() {
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+        FileProblems.checkIsFile(file, KIND);
+        // Read byte for byte (every byte is a Latin-1 character), so that no byte can stop the reading
+        // with a decoder's exception; statement() then checks that each statement is UTF-8 text.
+        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
             BoundedLines lines = new BoundedLines(in, Limits.MAX_OBJ_LINE);
             String line;
             while ((line = lines.next()) != null) {
                 lineNumber++;
-                parseLine(line);
+                parseLine(statement(line));
             }
         } catch (BoundedLines.TooLong e) {
             throw new SceneException(file, lineNumber + 1, 1, "the line is longer than " + Limits.MAX_OBJ_LINE
                     + " characters; expected an OBJ statement (v, vn, vt, f, ...) per line");
-        } catch (NoSuchFileException e) {
-            throw new SceneException(file, 1, 1, "no such mesh file");
         } catch (IOException e) {
-            throw new SceneException(file, Math.max(1, lineNumber), 1, "cannot read the mesh file (" + e.getMessage() + ")");
+            throw FileProblems.cannotRead(file, e, KIND);
+        }
+        if (lineNumber == 0) {
+            throw new SceneException(file, 1, 1, "the mesh file is empty; expected 'v' and 'f' lines");
         }
         if (triangleCount == 0) {
-            throw new SceneException(file, Math.max(1, lineNumber), 1, "the mesh has no faces; expected at least one 'f' line");
+            throw error("the mesh has no faces; expected at least one 'f' line");
         }
         return new MeshData(file, positions.build().toArray(), normals.build().toArray(), triangles.build().toArray(),
                 anyNormals ? triangleNormals.build().toArray() : null);
     }
 
-    private void parseLine(String raw) {
-        int hash = raw.indexOf('#');
-        String line = (hash >= 0 ? raw.substring(0, hash) : raw).strip();
+    /**
+     * The statement on a line read as Latin-1 bytes: without its comment (a '#' byte, which is never
+     * part of a longer UTF-8 character) and decoded as UTF-8. A comment may hold any bytes; a
+     * statement that is not UTF-8 text is an error.
+     */
+    private String statement(String latin1) {
+        int hash = latin1.indexOf('#');
+        String s = hash >= 0 ? latin1.substring(0, hash) : latin1;
+        if (lineNumber == 1 && s.startsWith(UTF8_BYTE_ORDER_MARK)) {
+            s = s.substring(UTF8_BYTE_ORDER_MARK.length());
+        }
+        boolean ascii = s.chars().allMatch(c -> c < 0x80);
+        if (ascii) {
+            return s;
+        }
+        ByteBuffer bytes = ByteBuffer.wrap(s.getBytes(StandardCharsets.ISO_8859_1));
+        CharBuffer chars = CharBuffer.allocate(bytes.remaining());
+        CoderResult result = StandardCharsets.UTF_8.newDecoder().decode(bytes, chars, true);
+        if (result.isError()) {
+            int bad = bytes.get(bytes.position()) & 0xFF;
+            throw error(String.format(Locale.ROOT, "byte 0x%02X is not UTF-8 text; expected OBJ text in UTF-8 (or ASCII)", bad));
+        }
+        return chars.flip().toString();
+    }
+
+    private void parseLine(String statement) {
+        String line = statement.strip();
         if (line.isEmpty()) {
             return;
         }
@@ -92,7 +127,7 @@ public final class ObjReader {
                 break;
             case "vt":
                 if (words.length < 2) {
-                    throw error("'vt' needs at least one coordinate; expected vt u [v [w]]");
+                    throw error("'vt' has no coordinates; expected vt u [v [w]]");
                 }
                 texCoordCount++;
                 break;
@@ -108,7 +143,9 @@ public final class ObjReader {
     private void readVector(String[] words, DoubleStream.Builder into, String form) {
         // "v x y z w" is allowed by the format (w is a weight we ignore); so are vertex colors after xyz.
         if (words.length < 4) {
-            throw error("'" + words[0] + "' needs 3 numbers; expected " + form);
+            int n = words.length - 1;
+            throw error("'" + words[0] + "' has " + (n == 0 ? "no numbers" : n == 1 ? "1 number" : n + " numbers")
+                    + "; expected " + form);
         }
         for (int i = 1; i <= 3; i++) {
             into.add(parseNumber(words[i], form));
@@ -116,21 +153,23 @@ public final class ObjReader {
     }
 
     private double parseNumber(String word, String form) {
+        double value;
         try {
-            double value = Double.parseDouble(word);
-            if (Double.isFinite(value)) {
-                return value;
-            }
+            value = Double.parseDouble(word);
         } catch (NumberFormatException e) {
-            // reported below
+            throw error("\"" + SceneException.excerpt(word) + "\" is not a number; expected " + form);
         }
-        throw error("\"" + word + "\" is not a finite number; expected " + form);
+        if (!Double.isFinite(value)) {
+            throw error("\"" + SceneException.excerpt(word) + "\" is not a finite number; expected " + form);
+        }
+        return value;
     }
 
     private void readFace(String[] words) {
         int corners = words.length - 1;
         if (corners < 3) {
-            throw error("a face needs at least 3 vertices, got " + corners);
+            throw error("the face has " + (corners == 0 ? "no vertices" : corners == 1 ? "1 vertex" : corners + " vertices")
+                    + "; expected at least 3: f v1 v2 v3 ...");
         }
         int[] vertex = new int[corners];
         int[] normal = new int[corners];
@@ -138,7 +177,8 @@ public final class ObjReader {
         for (int i = 0; i < corners; i++) {
             String[] parts = words[i + 1].split("/", -1);
             if (parts.length > 3 || parts[0].isEmpty()) {
-                throw error("\"" + words[i + 1] + "\" is not a face vertex; expected v, v/vt, v//vn or v/vt/vn");
+                throw error("\"" + SceneException.excerpt(words[i + 1])
+                        + "\" is not a face vertex; expected v, v/vt, v//vn or v/vt/vn");
             }
             vertex[i] = index(parts[0], vertexCount, "vertex");
             if (parts.length >= 2 && !parts[1].isEmpty()) {
@@ -177,7 +217,7 @@ public final class ObjReader {
         try {
             i = Integer.parseInt(word);
         } catch (NumberFormatException e) {
-            throw error("\"" + word + "\" is not a " + what + " index; expected an integer");
+            throw error("\"" + SceneException.excerpt(word) + "\" is not a " + what + " index; expected an integer");
         }
         int zeroBased = i > 0 ? i - 1 : count + i;
         if (i == 0 || zeroBased < 0 || zeroBased >= count) {
@@ -192,6 +232,6 @@ public final class ObjReader {
     }
 
     private SceneException error(String problem) {
-        return new SceneException(file, lineNumber, 1, problem);
+        return new SceneException(file, Math.max(1, lineNumber), 1, problem);
     }
 }

@@ -1,11 +1,14 @@
 package ray.scene;
 
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.Deque;
+import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import javax.xml.XMLConstants;
 import javax.xml.parsers.DocumentBuilderFactory;
 import javax.xml.parsers.ParserConfigurationException;
@@ -17,6 +20,8 @@ import org.w3c.dom.Node;
 import org.xml.sax.Attributes;
 import org.xml.sax.Locator;
 import org.xml.sax.SAXException;
+import org.xml.sax.SAXNotRecognizedException;
+import org.xml.sax.SAXNotSupportedException;
 import org.xml.sax.SAXParseException;
 import org.xml.sax.ext.DefaultHandler2;
 
@@ -35,46 +40,138 @@ final class PositionalXml {
     }
 
     static Document read(Path file) {
-        byte[] bytes;
-        try {
-            if (Files.isDirectory(file)) {
-                throw new SceneException(file, 1, 1, "is a folder; expected a scene file (.xml)");
-            }
-            long size = Files.size(file);
-            if (size > Limits.MAX_SCENE_BYTES) {
-                throw new SceneException(file, 1, 1, "the file has " + size + " bytes; expected a scene file of at most "
-                        + Limits.MAX_SCENE_BYTES + " bytes (meshes belong in OBJ files)");
-            }
-            bytes = Files.readAllBytes(file);
-        } catch (NoSuchFileException e) {
-            throw new SceneException(file, 1, 1, "no such file");
-        } catch (IOException e) {
-            throw new SceneException(file, 1, 1, "cannot read the file (" + e.getMessage() + ")");
-        }
+        byte[] bytes = FileProblems.readAllBytes(file, "a scene file", Limits.MAX_SCENE_BYTES);
+        Document document;
+        SAXParser parser;
         try {
             SAXParserFactory factory = SAXParserFactory.newInstance();
             factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
             factory.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
-            SAXParser parser = factory.newSAXParser();
-            Document document = DocumentBuilderFactory.newInstance().newDocumentBuilder().newDocument();
-            Builder builder = new Builder(document);
+            parser = factory.newSAXParser();
+            document = DocumentBuilderFactory.newInstance().newDocumentBuilder().newDocument();
+        } catch (SAXException | ParserConfigurationException e) {
+            throw new SceneException(file, 1, 1, "cannot set up the XML parser (" + e.getMessage() + ")");
+        }
+        Builder builder = new Builder(document);
+        try {
+            try {
+                // The parser's own words in a message should not depend on the computer's language: ROOT
+                // picks its base messages, which are English (ENGLISH would fall back to the default language's).
+                parser.setProperty("http://apache.org/xml/properties/locale", Locale.ROOT);
+            } catch (SAXNotRecognizedException | SAXNotSupportedException e) {
+                // Another parser than the JDK's: its messages come in the default language.
+            }
             // The lexical handler reports comments, so that text after a comment is located correctly.
             parser.setProperty("http://xml.org/sax/properties/lexical-handler", builder);
-            parser.parse(new java.io.ByteArrayInputStream(bytes), builder);
+            parser.parse(new ByteArrayInputStream(bytes), builder);
             return document;
         } catch (TooDeep e) {
             throw new SceneException(file, e.line, e.column, "elements are nested more than " + Limits.MAX_NESTING
                     + " deep; expected a scene of at most " + Limits.MAX_NESTING + " levels");
         } catch (SAXParseException e) {
-            String message = e.getMessage();
-            if (message != null && message.contains("DOCTYPE")) {
-                message = "a DOCTYPE is not allowed in a scene file (no entities or external files)";
+            int line = Math.max(1, e.getLineNumber());
+            int column = Math.max(1, e.getColumnNumber());
+            String text = new String(bytes, StandardCharsets.UTF_8);
+            if (ENDS_INSIDE_MARKUP.equals(e.getMessage()) && !builder.open.isEmpty()) {
+                // A comment or CDATA section left open: point at where it starts, not at the end of the file.
+                SceneException unclosed = unclosedAtEnd(file, text, "<!--", "-->", "comment");
+                if (unclosed == null) {
+                    unclosed = unclosedAtEnd(file, text, "<![CDATA[", "]]>", "CDATA section");
+                }
+                if (unclosed != null) {
+                    throw unclosed;
+                }
             }
-            throw new SceneException(file, Math.max(1, e.getLineNumber()), Math.max(1, e.getColumnNumber()),
-                    "malformed XML: " + message);
-        } catch (SAXException | ParserConfigurationException | IOException e) {
+            throw new SceneException(file, line, column, parseProblem(e, builder, text, line, column));
+        } catch (SAXException | IOException e) {
             throw new SceneException(file, 1, 1, "cannot parse the XML (" + e.getMessage() + ")");
         }
+    }
+
+    /** What the parser says when the file ends inside an element, comment or CDATA section. */
+    private static final String ENDS_INSIDE_MARKUP = "XML document structures must start and end within the same entity.";
+    private static final Pattern UNMATCHED_END_TAG =
+            Pattern.compile("The element type \"([^\"]*)\" must be terminated by the matching end-tag .*");
+    private static final Pattern LESS_THAN_IN_ATTRIBUTE = Pattern.compile("The value of attribute \"([^\"]*)\" associated with"
+            + " an element type \"([^\"]*)\" must not contain the '<' character\\.");
+
+    /**
+     * The problem the parser found, in our own words for the mistakes people make most (a misspelt or
+     * missing end tag, a file cut short, a missing quote, text outside the root) and in the parser's
+     * (English) words otherwise.
+     */
+    private static String parseProblem(SAXParseException e, Builder builder, String text, int line, int column) {
+        String message = e.getMessage() == null ? "" : e.getMessage();
+        if (message.contains("DOCTYPE")) {
+            return "a DOCTYPE is not allowed in a scene file; expected plain XML, without entities or external files";
+        }
+        Matcher m = UNMATCHED_END_TAG.matcher(message);
+        if (m.matches()) {
+            String open = m.group(1);
+            String endTag = endTagAt(text, line, column);
+            return "malformed XML: " + (endTag != null ? "</" + endTag + ">" : "an end tag") + " does not close <" + open
+                    + ">; expected </" + open + ">";
+        }
+        m = LESS_THAN_IN_ATTRIBUTE.matcher(message);
+        if (m.matches()) {
+            return "malformed XML: the value of attribute " + m.group(1) + " of <" + m.group(2) + "> runs into a '<'; "
+                    + "expected its closing quote before that (write a '<' inside a value as &lt;)";
+        }
+        if (message.equals(ENDS_INSIDE_MARKUP) && !builder.open.isEmpty()) {
+            String open = builder.open.peek().getTagName();
+            return "malformed XML: the file ends before <" + open + "> is closed; expected </" + open + ">";
+        }
+        if (message.equals("Premature end of file.") && !builder.anyElement) {
+            return text.isBlank() ? "the file is empty; expected a <scene> element"
+                    : "the file has no elements; expected a <scene> element";
+        }
+        if (message.equals("Content is not allowed in prolog.")) {
+            return "malformed XML: text before the first element;"
+                    + " expected the file to start with <scene> (or an <?xml ...?> declaration)";
+        }
+        // The parser's sentences end with a full stop; ours do not.
+        return "malformed XML: " + (message.endsWith(".") ? message.substring(0, message.length() - 1) : message);
+    }
+
+    /** The name in the end tag ({@code </name>}) that the parser stopped in, or null if it is not found there. */
+    private static String endTagAt(String text, int line, int column) {
+        String[] lines = text.split("\r\n|\r|\n", -1);
+        if (line > lines.length) {
+            return null;
+        }
+        String l = lines[line - 1];
+        int start = l.lastIndexOf("</", Math.min(column - 1, l.length()));
+        if (start < 0) {
+            return null;
+        }
+        int end = start + 2;
+        while (end < l.length() && l.charAt(end) != '>' && !Character.isWhitespace(l.charAt(end))) {
+            end++;
+        }
+        return end > start + 2 ? SceneException.excerpt(l.substring(start + 2, end)) : null;
+    }
+
+    /**
+     * The error for a {@code open}…{@code close} section (a comment or CDATA section) that the file
+     * ends inside, located where it starts; null if the last one is closed.
+     */
+    private static SceneException unclosedAtEnd(Path file, String text, String open, String close, String what) {
+        int start = text.lastIndexOf(open);
+        if (start < 0 || text.indexOf(close, start + open.length()) >= 0) {
+            return null;
+        }
+        int line = 1;
+        int lineStart = 0;
+        for (int i = 0; i < start; i++) {
+            char c = text.charAt(i);
+            // \r\n and \r end a line as \n does.
+            if (c == '\n' || (c == '\r' && (i + 1 == text.length() || text.charAt(i + 1) != '\n'))) {
+                line++;
+                lineStart = i + 1;
+            }
+        }
+        return new SceneException(file, line, start - lineStart + 1,
+                "malformed XML: this " + what + " is never closed; expected " + close + " before the end of the file");
     }
 
     /**
@@ -99,7 +196,9 @@ final class PositionalXml {
 
     private static final class Builder extends DefaultHandler2 {
         private final Document document;
+        /** The elements started and not yet ended, innermost first. */
         private final Deque<Element> open = new ArrayDeque<>();
+        private boolean anyElement;
         private final StringBuilder text = new StringBuilder();
         private Locator locator;
         /** Where the next character of text starts: right after the latest tag, comment or instruction. */
@@ -120,6 +219,7 @@ final class PositionalXml {
         @Override
         public void startElement(String uri, String localName, String qName, Attributes attributes) throws SAXException {
             flushText();
+            anyElement = true;
             Element element = document.createElement(qName);
             for (int i = 0; i < attributes.getLength(); i++) {
                 element.setAttribute(attributes.getQName(i), attributes.getValue(i));

@@ -30,7 +30,7 @@ public class Scene {
 
     public void setImage(int width, int height) {
         if (width <= 0 || height <= 0) {
-            throw new IllegalArgumentException("the image size must be two positive integers, got " + width + " " + height);
+            throw new IllegalArgumentException("image size is " + width + " " + height + "; expected two positive integers");
         }
         String tooLarge = Limits.imageSizeProblem(width, height);
         if (tooLarge != null) {
@@ -42,7 +42,7 @@ public class Scene {
 
     public void setExposure(double exposure) {
         if (!(exposure >= 0) || Double.isInfinite(exposure)) {
-            throw new IllegalArgumentException("exposure must be a number ≥ 0, got " + exposure);
+            throw new IllegalArgumentException("exposure is " + exposure + "; expected a number ≥ 0");
         }
         this.exposure = exposure;
     }
@@ -53,7 +53,7 @@ public class Scene {
 
     public void setSamples(int samples) {
         if (samples <= 0) {
-            throw new IllegalArgumentException("samples must be a positive integer, got " + samples);
+            throw new IllegalArgumentException("samples is " + samples + "; expected a positive integer");
         }
         String tooMany = Limits.samplesProblem(samples);
         if (tooMany != null) {
@@ -78,10 +78,11 @@ public class Scene {
     /** Checks that the scene can be rendered and gives a white Lambertian to every surface without a shader. */
     public void complete() {
         if (camera == null) {
-            throw new IllegalArgumentException("the scene has no <camera>");
+            throw new IllegalArgumentException(
+                    "the scene has no <camera>; expected a camera, e.g. <camera type=\"PerspectiveCamera\"/>");
         }
         if (width == 0) {
-            throw new IllegalArgumentException("the scene has no <image> size (expected <image>width height</image>)");
+            throw new IllegalArgumentException("the scene has no <image> size; expected <image>width height</image>");
         }
         surfaces.inheritShader(new Lambertian());
     }

@@ -1,6 +1,7 @@
 package ray.scene;
 
 import java.nio.file.Path;
+import java.util.Locale;
 
 /**
  * A mistake in a scene or mesh file, located to the file, line and column. Its message is the
@@ -12,35 +13,13 @@ public class SceneException extends RuntimeException {
     private final int column;
     private final String problem;
 
+    /** {@code problem} is put on one line (see {@link #oneLine}), whatever it quotes from the file. */
     public SceneException(Path file, int line, int column, String problem) {
-        super(file + ":" + line + ":" + column + ": " + printable(problem));
+        super(file + ":" + line + ":" + column + ": " + oneLine(problem));
         this.file = file;
         this.line = line;
         this.column = column;
-        this.problem = printable(problem);
-    }
-
-    /**
-     * The problem with its control characters written as Java escapes (a line break as backslash n): text quoted from a
-     * damaged file must neither break the one line nor send a terminal its escape sequences.
-     */
-    static String printable(String problem) {
-        StringBuilder s = new StringBuilder(problem.length());
-        for (int i = 0; i < problem.length(); i++) {
-            char c = problem.charAt(i);
-            if (c == '\n') {
-                s.append("\\n");
-            } else if (c == '\r') {
-                s.append("\\r");
-            } else if (c == '\t') {
-                s.append("\\t");
-            } else if (Character.isISOControl(c)) {
-                s.append(String.format("\\u%04x", (int) c));
-            } else {
-                s.append(c);
-            }
-        }
-        return s.toString();
+        this.problem = oneLine(problem);
     }
 
     public Path file() {
@@ -58,5 +37,36 @@ public class SceneException extends RuntimeException {
     /** The message without its location. */
     public String problem() {
         return problem;
+    }
+
+    /**
+     * {@code text} as one line: each run of white space (line breaks and tabs included) becomes one
+     * space, and any other control character or line separator is written as a backslash, "u" and
+     * its four hex digits, so that a quoted piece of a file cannot break the message in two.
+     */
+    static String oneLine(String text) {
+        StringBuilder out = new StringBuilder(text.length());
+        boolean inSpace = false;
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            boolean space = c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\u000B';
+            if (space) {
+                if (!inSpace) {
+                    out.append(' ');
+                }
+            } else if (Character.isISOControl(c) || c == '\u2028' || c == '\u2029') {
+                out.append(String.format(Locale.ROOT, "\\u%04X", (int) c));
+            } else {
+                out.append(c);
+            }
+            inSpace = space;
+        }
+        return out.toString();
+    }
+
+    /** A piece of a file to quote in a message: on one line, and cut to 40 characters. */
+    static String excerpt(String text) {
+        String s = oneLine(text);
+        return s.length() <= 40 ? s : s.substring(0, 37) + "...";
     }
 }

@@ -14,6 +14,7 @@ import java.util.regex.Pattern;
 import org.w3c.dom.Element;
 import org.w3c.dom.NamedNodeMap;
 import org.w3c.dom.Node;
+import org.w3c.dom.NodeList;
 import ray.camera.Camera;
 import ray.math.Vec3;
 import ray.surface.MeshData;
@@ -40,6 +41,8 @@ public final class SceneLoader {
 
     private final Path file;
     private final Map<String, Object> named = new HashMap<>();
+    /** The element that defined each name, for the line of the first one when a name is used twice. */
+    private final Map<String, Element> namedAt = new HashMap<>();
 
     private SceneLoader(Path file) {
         this.file = file;
@@ -71,7 +74,7 @@ public final class SceneLoader {
     private void setProperties(Object target, Element element) {
         for (Node node = element.getFirstChild(); node != null; node = node.getNextSibling()) {
             if (node.getNodeType() == Node.TEXT_NODE && !node.getTextContent().isBlank()) {
-                throw error(node, "unexpected text \"" + abbreviate(node.getTextContent().strip())
+                throw error(node, "unexpected text \"" + excerpt(node.getTextContent().strip())
                         + "\" in <" + element.getTagName() + ">; expected only elements here");
             }
             if (node.getNodeType() != Node.ELEMENT_NODE) {
@@ -87,7 +90,7 @@ public final class SceneLoader {
                 if (cause instanceof SceneException) {
                     throw (SceneException) cause;
                 }
-                throw error(property, "invalid <" + property.getTagName() + ">: " + cause.getMessage());
+                throw error(property, refusal(property, propertyName(setter), cause));
             } catch (IllegalAccessException e) {
                 throw error(property, "cannot set <" + property.getTagName() + "> (" + e.getMessage() + ")");
             }
@@ -111,6 +114,19 @@ public final class SceneLoader {
         throw error(property, "unknown element <" + name + "> in " + describe(type)
                 + (suggestion != null ? " (did you mean <" + suggestion + ">?)" : "")
                 + "; expected one of " + String.join(", ", known));
+    }
+
+    /**
+     * The problem of a setter that refused its value. Its message is the problem when it names the
+     * property ("radius is -1.0; expected a positive number"); otherwise it follows "invalid <tag>: ".
+     */
+    private static String refusal(Element property, String propertyName, Throwable cause) {
+        String message = cause.getMessage();
+        if (message == null) {
+            return "invalid <" + property.getTagName() + "> (" + cause.getClass().getSimpleName() + ")";
+        }
+        boolean namesProperty = message.regionMatches(true, 0, propertyName, 0, propertyName.length());
+        return namesProperty ? message : "invalid <" + property.getTagName() + ">: " + message;
     }
 
     private static boolean isProperty(Method m) {
@@ -154,10 +170,17 @@ public final class SceneLoader {
         }
         if (types.length == 1 && types[0] == MeshData.class) {
             Path mesh = resolve(property, text);
-            // Checked here so that the error points at the scene line that names the file.
-            if (!Files.isRegularFile(mesh)) {
+            // Checked here so that the error points at the scene line that names the file; errors in
+            // the file itself (empty, unreadable, bad lines) point into the file.
+            if (!Files.exists(mesh)) {
                 throw error(property, "no such mesh file " + mesh + "; expected an OBJ file (a relative path in <"
                         + property.getTagName() + "> starts from the scene file's folder)");
+            }
+            if (Files.isDirectory(mesh)) {
+                throw error(property, "the mesh path " + mesh + " is a folder; expected an OBJ file");
+            }
+            if (!Files.isRegularFile(mesh)) {
+                throw error(property, "the mesh path " + mesh + " is not a regular file; expected an OBJ file");
             }
             return new Object[] {ObjReader.read(mesh)};
         }
@@ -169,7 +192,7 @@ public final class SceneLoader {
         boolean allIntegers = types[0] == int.class;
         String expected = types.length == 1
                 ? (allIntegers ? "an integer" : "a number")
-                : types.length + (allIntegers ? " integers" : " numbers");
+                : numberWord(types.length) + (allIntegers ? " integers" : " numbers");
         String[] tokens = tokens(text);
         if (tokens.length != types.length) {
             throw error(property, "<" + property.getTagName() + "> has " + count(tokens.length) + "; expected " + expected);
@@ -178,13 +201,13 @@ public final class SceneLoader {
         for (int i = 0; i < types.length; i++) {
             if (types[i] == int.class) {
                 if (!INTEGER.matcher(tokens[i]).matches()) {
-                    throw error(property, "\"" + abbreviate(tokens[i]) + "\" in <" + property.getTagName()
+                    throw error(property, "\"" + excerpt(tokens[i]) + "\" in <" + property.getTagName()
                             + "> is not an integer; expected " + expected);
                 }
                 try {
                     args[i] = Integer.parseInt(tokens[i]);
                 } catch (NumberFormatException e) {
-                    throw error(property, "\"" + abbreviate(tokens[i]) + "\" in <" + property.getTagName()
+                    throw error(property, "\"" + excerpt(tokens[i]) + "\" in <" + property.getTagName()
                             + "> is too large; expected " + expected);
                 }
             } else {
@@ -209,12 +232,12 @@ public final class SceneLoader {
     private double number(Element property, String token, String expected) {
         // Java's parser also takes "NaN", "Infinity", hex floats and a 'd' suffix; a scene takes plain decimals.
         if (!NUMBER.matcher(token).matches()) {
-            throw error(property, "\"" + abbreviate(token) + "\" in <" + property.getTagName() + "> is not a number; expected "
+            throw error(property, "\"" + excerpt(token) + "\" in <" + property.getTagName() + "> is not a number; expected "
                     + expected);
         }
         double value = Double.parseDouble(token);
         if (Double.isInfinite(value)) {
-            throw error(property, "\"" + abbreviate(token) + "\" in <" + property.getTagName() + "> is too large; expected "
+            throw error(property, "\"" + excerpt(token) + "\" in <" + property.getTagName() + "> is too large; expected "
                     + expected);
         }
         return value;
@@ -227,6 +250,11 @@ public final class SceneLoader {
 
     private static String count(int n) {
         return n == 0 ? "no value" : n == 1 ? "1 value" : n + " values";
+    }
+
+    /** "two", "three", "four", as in "expected two integers"; larger counts in digits. */
+    private static String numberWord(int n) {
+        return n >= 2 && n <= 4 ? new String[] {"two", "three", "four"}[n - 2] : Integer.toString(n);
     }
 
     private Path resolve(Element property, String text) {
@@ -246,17 +274,28 @@ public final class SceneLoader {
     private Object buildObject(Element element, Class<?> baseType) {
         String ref = element.getAttribute("ref");
         if (!ref.isEmpty()) {
-            if (element.hasAttribute("type") || element.hasAttribute("name") || hasChildElements(element)) {
-                throw error(element, "<" + element.getTagName() + " ref=\"" + ref
-                        + "\"> reuses a named object and takes no type, name or properties");
+            List<String> extras = new ArrayList<>();
+            for (String attribute : new String[] {"type", "name"}) {
+                if (element.hasAttribute(attribute)) {
+                    extras.add("a " + attribute);
+                }
+            }
+            if (hasChildElements(element)) {
+                extras.add("properties");
+            }
+            if (!extras.isEmpty()) {
+                // "a type", "a type and properties", "a type, a name and properties".
+                String last = extras.remove(extras.size() - 1);
+                String listed = extras.isEmpty() ? last : String.join(", ", extras) + " and " + last;
+                throw error(element, "<" + element.getTagName() + " ref=\"" + excerpt(ref) + "\"> also has " + listed
+                        + "; expected the ref alone (it reuses the named object as it is)");
             }
             Object found = named.get(ref);
             if (found == null) {
-                throw error(element, "unknown ref \"" + ref + "\"; expected the name of an object defined earlier in the file"
-                        + suggestionAmong(ref, named.keySet()));
+                throw error(element, unknownRef(element, ref));
             }
             if (!baseType.isInstance(found)) {
-                throw error(element, "ref \"" + ref + "\" names " + article(found.getClass().getSimpleName())
+                throw error(element, "ref \"" + excerpt(ref) + "\" names " + article(found.getClass().getSimpleName())
                         + found.getClass().getSimpleName() + "; expected " + article(baseType.getSimpleName())
                         + baseType.getSimpleName());
             }
@@ -266,19 +305,47 @@ public final class SceneLoader {
         Object object;
         try {
             object = type.getConstructor().newInstance();
+        } catch (InvocationTargetException e) {
+            // A bug in the class rather than in the scene: say what the constructor threw.
+            throw error(element, "cannot create " + article(type.getSimpleName()) + type.getSimpleName()
+                    + ": its constructor threw " + e.getCause());
         } catch (ReflectiveOperationException e) {
-            throw error(element, "cannot create a " + type.getSimpleName() + " (" + e + ")");
+            throw error(element, "cannot create " + article(type.getSimpleName()) + type.getSimpleName() + " (" + e + ")");
         }
         setProperties(object, element);
         object = complete(element, object, baseType);
         String name = element.getAttribute("name");
         if (!name.isEmpty()) {
-            if (named.containsKey(name)) {
-                throw error(element, "duplicate name \"" + name + "\"; expected each name to be used once");
+            Element first = namedAt.putIfAbsent(name, element);
+            if (first != null) {
+                throw error(element, "duplicate name \"" + excerpt(name) + "\" (first given on line "
+                        + PositionalXml.position(first)[0] + "); expected each name to be used once");
             }
             named.put(name, object);
         }
         return object;
+    }
+
+    /** Why {@code ref} names nothing: it is defined only later in the file, or not at all. */
+    private String unknownRef(Element element, String ref) {
+        for (Node n = element.getParentNode(); n instanceof Element; n = n.getParentNode()) {
+            if (((Element) n).getAttribute("name").equals(ref)) {
+                return "ref \"" + excerpt(ref) + "\" names the object it is inside (line " + PositionalXml.position(n)[0]
+                        + "); expected the name of an object defined before it";
+            }
+        }
+        // Every object defined before the ref and not around it is complete and in named, so the rest come later.
+        NodeList all = element.getOwnerDocument().getElementsByTagName("*");
+        for (int i = 0; i < all.getLength(); i++) {
+            Element e = (Element) all.item(i);
+            if (e.getAttribute("name").equals(ref)) {
+                return "ref \"" + excerpt(ref) + "\" names an object defined later, on line " + PositionalXml.position(e)[0]
+                        + "; expected the name of an object defined before it";
+            }
+        }
+        String suggestion = Suggestions.closest(ref, named.keySet());
+        return "unknown ref \"" + excerpt(ref) + "\"" + (suggestion != null ? " (did you mean \"" + suggestion + "\"?)" : "")
+                + "; expected the name of an object defined earlier in the file";
     }
 
     private Class<?> resolveType(Element element, Class<?> baseType) {
@@ -288,7 +355,7 @@ public final class SceneLoader {
                 // <shader>blue</shader> is a common way to try to reuse a named object.
                 String text = hasChildElements(element) ? "" : element.getTextContent().strip();
                 String hint = text.isEmpty() ? "" : " (to reuse a named object, write <" + element.getTagName()
-                        + " ref=\"" + abbreviate(text) + "\"/>)";
+                        + " ref=\"" + excerpt(text) + "\"/>)";
                 throw error(element, "<" + element.getTagName() + "> needs a type attribute; expected one of "
                         + String.join(", ", KnownTypes.of(baseType)) + hint);
             }
@@ -300,6 +367,12 @@ public final class SceneLoader {
             // before it is known to be a surface, shader, camera or light.
             Class<?> type = Class.forName(qualified, false, SceneLoader.class.getClassLoader());
             if (baseType.isAssignableFrom(type) && !Modifier.isAbstract(type.getModifiers())) {
+                if (!hasPublicConstructorWithoutArguments(type)) {
+                    // Transformed, for one: made by a Group, never written in a scene.
+                    throw error(element, "type \"" + excerpt(typeName) + "\" cannot be made from a scene file (it has no"
+                            + " public constructor without arguments); expected one of "
+                            + String.join(", ", KnownTypes.of(baseType)));
+                }
                 return type;
             }
         } catch (ClassNotFoundException | NoClassDefFoundError e) {
@@ -307,9 +380,18 @@ public final class SceneLoader {
             // file system gives for a wrongly cased name such as "sphere".
         }
         String suggestion = Suggestions.closest(typeName, KnownTypes.of(baseType));
-        throw error(element, "unknown type \"" + typeName + "\" for <" + element.getTagName() + ">"
+        throw error(element, "unknown type \"" + excerpt(typeName) + "\" for <" + element.getTagName() + ">"
                 + (suggestion != null ? " (did you mean \"" + suggestion + "\"?)" : "")
                 + "; expected one of " + String.join(", ", KnownTypes.of(baseType)));
+    }
+
+    private static boolean hasPublicConstructorWithoutArguments(Class<?> type) {
+        try {
+            type.getConstructor();
+            return true;
+        } catch (NoSuchMethodException e) {
+            return false;
+        }
     }
 
     private Object complete(Element element, Object object, Class<?> baseType) {
@@ -354,15 +436,8 @@ public final class SceneLoader {
         return false;
     }
 
-    private static String suggestionAmong(String word, Iterable<String> candidates) {
-        List<String> list = new ArrayList<>();
-        candidates.forEach(list::add);
-        String s = Suggestions.closest(word, list);
-        return s == null ? "" : " (did you mean \"" + s + "\"?)";
-    }
-
-    private static String abbreviate(String s) {
-        return s.length() <= 40 ? s : s.substring(0, 37) + "...";
+    private static String excerpt(String s) {
+        return SceneException.excerpt(s);
     }
 
     private SceneException error(Node node, String problem) {

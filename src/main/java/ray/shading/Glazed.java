@@ -18,7 +18,7 @@ public class Glazed extends Shader {
 
     public void setRefractiveIndex(double refractiveIndex) {
         if (!(refractiveIndex > 0) || Double.isInfinite(refractiveIndex)) {
-            throw new IllegalArgumentException("refractiveIndex must be a positive number, got " + refractiveIndex);
+            throw new IllegalArgumentException("refractiveIndex is " + refractiveIndex + "; expected a positive number");
         }
         this.refractiveIndex = refractiveIndex;
     }

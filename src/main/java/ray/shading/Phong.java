@@ -21,7 +21,7 @@ public class Phong extends DirectLighting {
 
     public void setExponent(double exponent) {
         if (!(exponent >= 0) || Double.isInfinite(exponent)) {
-            throw new IllegalArgumentException("exponent must be a number ≥ 0, got " + exponent);
+            throw new IllegalArgumentException("exponent is " + exponent + "; expected a number ≥ 0");
         }
         this.exponent = exponent;
     }

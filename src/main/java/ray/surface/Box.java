@@ -29,7 +29,8 @@ public class Box extends Group {
     @Override
     public Surface complete() {
         if (!(minPt.x < maxPt.x && minPt.y < maxPt.y && minPt.z < maxPt.z)) {
-            throw new IllegalArgumentException("minPt " + minPt + " must be less than maxPt " + maxPt + " on every axis");
+            throw new IllegalArgumentException("minPt " + minPt + " is not below maxPt " + maxPt
+                    + " on every axis; expected minPt < maxPt in x, y and z");
         }
         surfaces.clear();
         // Corner k has x from bit 0, y from bit 1, z from bit 2 (0 = min, 1 = max).

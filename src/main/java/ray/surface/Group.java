@@ -68,6 +68,9 @@ public class Group extends Surface {
     /** Passes this group's shader to children without one, and wraps the group in its transform if it has one. */
     @Override
     public Surface complete() {
+        if (scale.x == 0 || scale.y == 0 || scale.z == 0) {
+            throw new IllegalArgumentException("scale " + scale + " is zero on an axis; expected a nonzero scale on every axis");
+        }
         passShaderToChildren();
         Affine placement = placement();
         return placement.isIdentity() ? this : new Transformed(this, placement);

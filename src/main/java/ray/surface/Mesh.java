@@ -20,7 +20,7 @@ public class Mesh extends Group {
     @Override
     public Surface complete() {
         if (data == null) {
-            throw new IllegalArgumentException("a mesh needs <data>, the path of an OBJ file");
+            throw new IllegalArgumentException("no <data> is given; expected <data> with the path of an OBJ file");
         }
         surfaces.clear();
         Vec3[] vertices = toVectors(data.positions);

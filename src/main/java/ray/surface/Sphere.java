@@ -31,7 +31,7 @@ public class Sphere extends Surface {
 
     public void setRadius(double radius) {
         if (!(radius > 0) || Double.isInfinite(radius)) {
-            throw new IllegalArgumentException("radius must be a positive number, got " + radius);
+            throw new IllegalArgumentException("radius is " + radius + "; expected a positive number");
         }
         this.radius = radius;
     }

@@ -4,6 +4,10 @@ import static org.junit.Assert.assertArrayEquals;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertNull;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
@@ -12,7 +16,8 @@ import ray.surface.MeshData;
 /**
  * Checks what {@link ObjReader} makes of valid OBJ text: positions and normals, faces in every
  * index form, negative indices, polygons split into fans around their first vertex (exact index
- * arrays), the statements and comments it ignores, and the -1 marker of faces without normals.
+ * arrays), the statements and comments it ignores (comments in any bytes), a UTF-8 byte order mark,
+ * and the -1 marker of faces without normals.
  */
 public class ObjReaderTest {
     @Rule
@@ -155,6 +160,25 @@ public class ObjReaderTest {
         MeshData mesh = read("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n");
         assertArrayEquals(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}, mesh.positions, 0);
         assertArrayEquals(new int[] {0, 1, 2}, mesh.triangles);
+    }
+
+    @Test
+    public void byteOrderMarkAndUtf8TextAreAccepted() {
+        MeshData mesh = read("\uFEFFv 0 0 0\nv 1 0 0\nv 0 1 0\ng Schädel # für Übungen\nf 1 2 3\n");
+        assertArrayEquals("the first vertex is read, not skipped", new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}, mesh.positions, 0);
+        assertArrayEquals(new int[] {0, 1, 2}, mesh.triangles);
+    }
+
+    @Test
+    public void commentsMayHoldBytesThatAreNotUtf8() {
+        // Comments written in Latin-1 ("é" as the single byte 0xE9) are skipped like any other.
+        Path file = folder.getRoot().toPath().resolve("latin1.obj");
+        try {
+            Files.write(file, ObjReaderErrorsTest.bytes("# caf", 0xE9, "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # ", 0xFF, "\n"));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        assertArrayEquals(new int[] {0, 1, 2}, ObjReader.read(file).triangles);
     }
 
     private MeshData read(String obj) {

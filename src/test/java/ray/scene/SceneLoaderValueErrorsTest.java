@@ -8,32 +8,35 @@ import org.junit.rules.TemporaryFolder;
 /**
  * Checks errors in values: the wrong number of values, words and special values where numbers
  * belong, fractions where integers belong, values out of range (radius, image size, samples,
- * exposure, view size, camera axes, box corners, scale), and a scene without a camera or an image
- * size. Each error must name the file, line and column, and what was expected.
+ * exposure, view size, projection distance, camera axes, box corners, scale), a mesh without its
+ * file, and a scene without a camera or an image size. Each error is checked whole: the file, line
+ * and column, what is wrong and what was expected.
  *
  * <p>SAX locates an element where its start tag ends, so an element's column is the one just after
  * its {@code >} (for {@code "    <radius>"}, column 13); each element sits on its own line.
  */
 public class SceneLoaderValueErrorsTest {
+    private static final String THREE_CENTER_NUMBERS = "three numbers, e.g. <center>1 0 -2.5</center>";
+
     @Rule
     public TemporaryFolder folder = new TemporaryFolder();
 
     @Test
     public void vectorWithTwoValuesAsksForThree() {
         SceneException e = loadSphereError("    <center>1 2</center>\n");
-        SceneFixtures.assertError(e, bad(), 5, 13, "<center> has 2 values", "expected three numbers");
+        SceneFixtures.assertError(e, bad(), 5, 13, "<center> has 2 values; expected " + THREE_CENTER_NUMBERS);
     }
 
     @Test
     public void vectorWithFourValuesAsksForThree() {
         SceneException e = loadSphereError("    <center>1 2 3 4</center>\n");
-        SceneFixtures.assertError(e, bad(), 5, 13, "<center> has 4 values", "expected three numbers");
+        SceneFixtures.assertError(e, bad(), 5, 13, "<center> has 4 values; expected " + THREE_CENTER_NUMBERS);
     }
 
     @Test
     public void emptyNumberAsksForOne() {
         SceneException e = loadSphereError("    <radius> </radius>\n");
-        SceneFixtures.assertError(e, bad(), 5, 13, "<radius> has no value", "expected a number");
+        SceneFixtures.assertError(e, bad(), 5, 13, "<radius> has no value; expected a number");
     }
 
     @Test
@@ -44,7 +47,7 @@ public class SceneLoaderValueErrorsTest {
                   <image>300</image>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 3, 10, "<image> has 1 value", "expected 2 integers");
+        SceneFixtures.assertError(e, bad(), 3, 10, "<image> has 1 value; expected two integers");
     }
 
     @Test
@@ -52,14 +55,23 @@ public class SceneLoaderValueErrorsTest {
         // Java's own parser would take NaN, Infinity, hex floats and a "d" suffix; a scene takes plain decimals.
         for (String word : new String[] {"abc", "NaN", "Infinity", "-Infinity", "0x10", "1d", "1,5"}) {
             SceneException e = loadSphereError("    <radius>" + word + "</radius>\n");
-            SceneFixtures.assertError(e, bad(), 5, 13, "\"" + word + "\" in <radius> is not a number", "expected a number");
+            SceneFixtures.assertError(e, bad(), 5, 13, "\"" + word + "\" in <radius> is not a number; expected a number");
+        }
+    }
+
+    @Test
+    public void specialValuesInAVectorAreNotNumbers() {
+        for (String word : new String[] {"NaN", "Infinity", "-Infinity", "inf"}) {
+            SceneException e = loadSphereError("    <center>0 " + word + " 0</center>\n");
+            SceneFixtures.assertError(e, bad(), 5, 13,
+                    "\"" + word + "\" in <center> is not a number; expected " + THREE_CENTER_NUMBERS);
         }
     }
 
     @Test
     public void numberBeyondDoubleRangeIsTooLarge() {
         SceneException e = loadSphereError("    <center>0 1e999 0</center>\n");
-        SceneFixtures.assertError(e, bad(), 5, 13, "\"1e999\" in <center> is too large", "expected three numbers");
+        SceneFixtures.assertError(e, bad(), 5, 13, "\"1e999\" in <center> is too large; expected " + THREE_CENTER_NUMBERS);
     }
 
     @Test
@@ -70,7 +82,7 @@ public class SceneLoaderValueErrorsTest {
                   <image>300.5 200</image>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 3, 10, "\"300.5\" in <image> is not an integer", "expected 2 integers");
+        SceneFixtures.assertError(e, bad(), 3, 10, "\"300.5\" in <image> is not an integer; expected two integers");
     }
 
     @Test
@@ -81,7 +93,7 @@ public class SceneLoaderValueErrorsTest {
                   <image>300 99999999999</image>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 3, 10, "\"99999999999\" in <image> is too large", "expected 2 integers");
+        SceneFixtures.assertError(e, bad(), 3, 10, "\"99999999999\" in <image> is too large; expected two integers");
     }
 
     @Test
@@ -93,15 +105,15 @@ public class SceneLoaderValueErrorsTest {
                   <samples>2.5</samples>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 4, 12, "\"2.5\" in <samples> is not an integer", "expected an integer");
+        SceneFixtures.assertError(e, bad(), 4, 12, "\"2.5\" in <samples> is not an integer; expected an integer");
     }
 
     @Test
     public void negativeAndZeroRadiusAreInvalid() {
         SceneException negative = loadSphereError("    <radius>-1</radius>\n");
-        SceneFixtures.assertError(negative, bad(), 5, 13, "invalid <radius>", "radius must be a positive number, got -1.0");
+        SceneFixtures.assertError(negative, bad(), 5, 13, "radius is -1.0; expected a positive number");
         SceneException zero = loadSphereError("    <radius>0</radius>\n");
-        SceneFixtures.assertError(zero, bad(), 5, 13, "invalid <radius>", "radius must be a positive number, got 0.0");
+        SceneFixtures.assertError(zero, bad(), 5, 13, "radius is 0.0; expected a positive number");
     }
 
     @Test
@@ -112,7 +124,18 @@ public class SceneLoaderValueErrorsTest {
                   <image>0 3</image>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 3, 10, "invalid <image>", "two positive integers, got 0 3");
+        SceneFixtures.assertError(e, bad(), 3, 10, "image size is 0 3; expected two positive integers");
+    }
+
+    @Test
+    public void negativeImageSizeIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>-4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 10, "image size is -4 3; expected two positive integers");
     }
 
     @Test
@@ -124,7 +147,19 @@ public class SceneLoaderValueErrorsTest {
                   <samples>0</samples>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 4, 12, "invalid <samples>", "samples must be a positive integer, got 0");
+        SceneFixtures.assertError(e, bad(), 4, 12, "samples is 0; expected a positive integer");
+    }
+
+    @Test
+    public void negativeSamplesIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <samples>-2</samples>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 12, "samples is -2; expected a positive integer");
     }
 
     @Test
@@ -136,7 +171,7 @@ public class SceneLoaderValueErrorsTest {
                   <exposure>-0.5</exposure>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 4, 13, "invalid <exposure>", "got -0.5");
+        SceneFixtures.assertError(e, bad(), 4, 13, "exposure is -0.5; expected a number ≥ 0");
     }
 
     @Test
@@ -149,7 +184,36 @@ public class SceneLoaderValueErrorsTest {
                   <image>4 3</image>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 3, 16, "invalid <viewWidth>", "viewWidth must be a positive number");
+        SceneFixtures.assertError(e, bad(), 3, 16, "viewWidth is 0.0; expected a positive number");
+    }
+
+    @Test
+    public void zeroViewHeightIsInvalid() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="OrthographicCamera">
+                    <viewHeight>0</viewHeight>
+                  </camera>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 3, 17, "viewHeight is 0.0; expected a positive number");
+    }
+
+    @Test
+    public void zeroAndNegativeProjDistanceAreInvalid() {
+        for (String distance : new String[] {"0", "-1.5"}) {
+            SceneException e = loadError("""
+                    <scene>
+                      <camera type="PerspectiveCamera">
+                        <projDistance>%s</projDistance>
+                      </camera>
+                      <image>4 3</image>
+                    </scene>
+                    """.formatted(distance));
+            SceneFixtures.assertError(e, bad(), 3, 19,
+                    "projDistance is " + Double.parseDouble(distance) + "; expected a positive number");
+        }
     }
 
     @Test
@@ -163,7 +227,8 @@ public class SceneLoaderValueErrorsTest {
                   <image>4 3</image>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 2, 36, "invalid PerspectiveCamera", "viewDir must be a nonzero vector");
+        SceneFixtures.assertError(e, bad(), 2, 36,
+                "invalid PerspectiveCamera: viewDir is (0.0, 0.0, 0.0); expected a nonzero vector");
     }
 
     @Test
@@ -177,7 +242,22 @@ public class SceneLoaderValueErrorsTest {
                   <image>4 3</image>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 2, 37, "invalid OrthographicCamera", "must not be zero or parallel to viewDir");
+        SceneFixtures.assertError(e, bad(), 2, 37, "invalid OrthographicCamera: viewUp (0.0, 0.0, 2.0) is parallel to"
+                + " viewDir (0.0, 0.0, -1.0); expected a viewUp that is not parallel to viewDir");
+    }
+
+    @Test
+    public void zeroViewUpIsReportedAtItsCamera() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera">
+                    <viewUp>0 0 0</viewUp>
+                  </camera>
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 2, 36,
+                "invalid PerspectiveCamera: viewUp is (0.0, 0.0, 0.0); expected a nonzero vector not parallel to viewDir");
     }
 
     @Test
@@ -192,11 +272,12 @@ public class SceneLoaderValueErrorsTest {
                   </surface>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 4, 23, "invalid Box", "must be less than maxPt");
+        SceneFixtures.assertError(e, bad(), 4, 23, "invalid Box: minPt (0.0, 2.0, 0.0) is not below maxPt (1.0, 1.0, 1.0)"
+                + " on every axis; expected minPt < maxPt in x, y and z");
     }
 
     @Test
-    public void zeroScaleIsASingularTransform() {
+    public void zeroScaleIsRefused() {
         SceneException e = loadError("""
                 <scene>
                   <camera type="PerspectiveCamera"/>
@@ -207,7 +288,8 @@ public class SceneLoaderValueErrorsTest {
                   </surface>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 4, 25, "invalid Group", "singular");
+        SceneFixtures.assertError(e, bad(), 4, 25,
+                "invalid Group: scale (1.0, 0.0, 1.0) is zero on an axis; expected a nonzero scale on every axis");
     }
 
     @Test
@@ -221,7 +303,21 @@ public class SceneLoaderValueErrorsTest {
                   </surface>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 5, 11, "<data> is empty", "expected a file path");
+        SceneFixtures.assertError(e, bad(), 5, 11, "<data> is empty; expected a file path");
+    }
+
+    @Test
+    public void meshWithoutDataAsksForIt() {
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Mesh">
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 24,
+                "invalid Mesh: no <data> is given; expected <data> with the path of an OBJ file");
     }
 
     @Test
@@ -232,7 +328,8 @@ public class SceneLoaderValueErrorsTest {
                   <image>4 3</image>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 2, 8, "the scene has no <camera>");
+        SceneFixtures.assertError(e, bad(), 2, 8,
+                "the scene has no <camera>; expected a camera, e.g. <camera type=\"PerspectiveCamera\"/>");
     }
 
     @Test
@@ -242,7 +339,7 @@ public class SceneLoaderValueErrorsTest {
                   <camera type="PerspectiveCamera"/>
                 </scene>
                 """);
-        SceneFixtures.assertError(e, bad(), 1, 8, "no <image> size", "<image>width height</image>");
+        SceneFixtures.assertError(e, bad(), 1, 8, "the scene has no <image> size; expected <image>width height</image>");
     }
 
     /** The error of a scene whose line 5 is {@code line}, inside a sphere that starts on line 4. */

@@ -2,6 +2,7 @@ package ray.scene;
 
 import static org.junit.Assert.assertFalse;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.Rule;
 import org.junit.Test;
@@ -9,13 +10,17 @@ import org.junit.rules.TemporaryFolder;
 
 /**
  * Checks errors in the XML itself: malformed markup, the wrong root, text where elements belong,
- * missing or empty files, and the refusal of any DOCTYPE (so no entity can expand without bound or
- * read a local file). Each error must name the file, the line and column, and the problem.
+ * missing, empty or unreadable files and folders, and the refusal of any DOCTYPE (so no entity can
+ * expand without bound or read a local file). Each error is checked whole: the file, the line and
+ * column, the problem and what was expected.
  *
  * <p>SAX locates an element where its start tag ends, so an element's column is the one just after
  * its {@code >}; each element sits on its own line so that the line is unambiguous.
  */
 public class SceneLoaderXmlErrorsTest {
+    private static final String DOCTYPE_REFUSED =
+            "a DOCTYPE is not allowed in a scene file; expected plain XML, without entities or external files";
+
     @Rule
     public TemporaryFolder folder = new TemporaryFolder();
 
@@ -28,7 +33,8 @@ public class SceneLoaderXmlErrorsTest {
                 </scene>
                 """);
         // The parser stops inside "</camra>" (columns 3 to 10 of line 3).
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 5, "malformed XML", "camera");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 5,
+                "malformed XML: </camra> does not close <camera>; expected </camera>");
     }
 
     @Test
@@ -40,7 +46,8 @@ public class SceneLoaderXmlErrorsTest {
                 </scene>
                 """);
         // The quote opened on line 2 runs on into line 3, where the parser stops at the "<" of "<image>".
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 3, "malformed XML", "attribute \"type\"", "'<'");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 3, "malformed XML: the value of attribute type of"
+                + " <camera> runs into a '<'; expected its closing quote before that (write a '<' inside a value as &lt;)");
     }
 
     @Test
@@ -50,19 +57,80 @@ public class SceneLoaderXmlErrorsTest {
                   <camera type="PerspectiveCamera"/>
                 """);
         // The parser notices at the end of the file: line 3, after the last newline.
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 1, "malformed XML", "start and end");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 1,
+                "malformed XML: the file ends before <scene> is closed; expected </scene>");
     }
 
     @Test
-    public void emptyFileIsMalformedXml() {
+    public void unclosedCommentIsReportedWhereItStarts() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <!-- the image size comes later
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 3,
+                "malformed XML: this comment is never closed; expected --> before the end of the file");
+    }
+
+    @Test
+    public void textBeforeTheRootIsMalformedXml() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                scene:
+                <scene>
+                </scene>
+                """);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1,
+                "malformed XML: text before the first element; expected the file to start with <scene>"
+                + " (or an <?xml ...?> declaration)");
+    }
+
+    @Test
+    public void otherMalformedXmlIsReportedInTheParsersEnglishWords() {
+        // A bare '&' is rare enough to keep the words of the JDK's parser, which the loader asks for in English.
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 & 3</image>
+                </scene>
+                """);
+        // The parser stops just past the '&' in column 12.
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 13,
+                "malformed XML: The entity name must immediately follow the '&' in the entity reference");
+    }
+
+    @Test
+    public void emptyFileIsReportedAsEmpty() {
         Path file = SceneFixtures.write(folder, "empty.xml", "");
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1, "malformed XML", "end of file");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1, "the file is empty; expected a <scene> element");
+    }
+
+    @Test
+    public void fileWithoutElementsIsReportedAsSuch() {
+        Path file = SceneFixtures.write(folder, "bad.xml", "<?xml version=\"1.0\"?>\n<!-- nothing yet -->\n");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 1,
+                "the file has no elements; expected a <scene> element");
     }
 
     @Test
     public void missingFileIsReportedWithItsName() {
         Path file = folder.getRoot().toPath().resolve("nowhere.xml");
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1, "no such file");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1, "no such file; expected the path of a scene file");
+    }
+
+    @Test
+    public void folderIsNotASceneFile() throws Exception {
+        Path scenes = Files.createDirectories(folder.getRoot().toPath().resolve("scenes.xml"));
+        SceneFixtures.assertError(SceneFixtures.loadError(scenes), scenes, 1, 1, "this is a folder; expected a scene file");
+    }
+
+    @Test
+    public void unreadableFileIsReportedAsSuch() throws Exception {
+        Path file = SceneFixtures.write(folder, "locked.xml", "<scene/>\n");
+        SceneFixtures.makeUnreadable(file);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1,
+                "the file cannot be read (permission denied); expected a readable scene file");
     }
 
     @Test
@@ -72,7 +140,7 @@ public class SceneLoaderXmlErrorsTest {
                 <scenery>
                 </scenery>
                 """);
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 10, "root element is <scenery>", "expected <scene>");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 10, "the root element is <scenery>; expected <scene>");
     }
 
     @Test
@@ -85,7 +153,22 @@ public class SceneLoaderXmlErrorsTest {
                 </scene>
                 """);
         SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 3,
-                "unexpected text \"radius 2\" in <scene>", "expected only elements");
+                "unexpected text \"radius 2\" in <scene>; expected only elements here");
+    }
+
+    @Test
+    public void textOverSeveralLinesIsQuotedOnOneLineAndCut() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  radius 2
+                  center 0 0 -5
+                  and a very long sentence after that
+                  <image>4 3</image>
+                </scene>
+                """);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 3,
+                "unexpected text \"radius 2 center 0 0 -5 and a very lon...\" in <scene>; expected only elements here");
     }
 
     @Test
@@ -100,20 +183,23 @@ public class SceneLoaderXmlErrorsTest {
                 </scene>
                 """);
         // "    <radius>1</radius> " is 23 characters, so "oops" starts in column 24.
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 5, 24, "unexpected text \"oops\" in <surface>");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 5, 24,
+                "unexpected text \"oops\" in <surface>; expected only elements here");
     }
 
     @Test
     public void textAfterACommentAndTabsIsLocatedPastThem() {
         Path file = SceneFixtures.write(folder, "bad.xml", "<scene>\n  <!-- a comment\n  over two lines -->\n\t\tstray\n</scene>\n");
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 4, 3, "unexpected text \"stray\"");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 4, 3,
+                "unexpected text \"stray\" in <scene>; expected only elements here");
     }
 
     @Test
     public void textInACdataSectionIsLocatedInsideIt() {
         Path file = SceneFixtures.write(folder, "bad.xml", "<scene>\n  <![CDATA[  stray ]]>\n</scene>\n");
         // "  <![CDATA[  " is 13 characters.
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 14, "unexpected text \"stray\"");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 14,
+                "unexpected text \"stray\" in <scene>; expected only elements here");
     }
 
     @Test
@@ -129,7 +215,7 @@ public class SceneLoaderXmlErrorsTest {
                   </surface>
                 </scene>
                 """);
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 5, 13, "<radius> holds elements", "expected only a value");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 5, 13, "<radius> holds elements; expected only a value");
     }
 
     @Test(timeout = 10_000)
@@ -146,7 +232,7 @@ public class SceneLoaderXmlErrorsTest {
         xml.append("]>\n<scene>\n  <exposure>&lol10;</exposure>\n</scene>\n");
         Path file = SceneFixtures.write(folder, "lol.xml", xml.toString());
         // Located at "<!DOCTYPE" on line 2, just past the keyword.
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 10, "DOCTYPE is not allowed", "no entities");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 10, DOCTYPE_REFUSED);
     }
 
     @Test
@@ -163,7 +249,7 @@ public class SceneLoaderXmlErrorsTest {
                 + "  <exposure>&secret;</exposure>\n"
                 + "</scene>\n");
         SceneException e = SceneFixtures.loadError(file);
-        SceneFixtures.assertError(e, file, 2, 10, "DOCTYPE is not allowed");
+        SceneFixtures.assertError(e, file, 2, 10, DOCTYPE_REFUSED);
         assertFalse(e.getMessage(), e.getMessage().contains("TOP-SECRET"));
     }
 }
