@@ -19,6 +19,7 @@ final class FuzzSummary {
     private final int workers;
     private final Map<String, long[]> byRow = new LinkedHashMap<>();
     private final Map<String, Long> errorKinds = new HashMap<>();
+    private final Map<String, Long> failureKinds = new HashMap<>();
     private final List<String> failures = new ArrayList<>();
     private final List<String> abandoned = new ArrayList<>();
     private final List<String> nonFiniteCases = new ArrayList<>();
@@ -71,6 +72,7 @@ final class FuzzSummary {
         }
         if (o.kind == Outcome.Kind.FAILED) {
             failed++;
+            failureKinds.merge(kindOf(o.message), 1L, Long::sum);
             if (failures.size() < FAILURES_LISTED) {
                 failures.add(c + ": " + o.message);
             }
@@ -146,7 +148,12 @@ final class FuzzSummary {
             nonFiniteCases.forEach(n -> s.append("- ").append(n).append('\n'));
         }
         if (!failures.isEmpty() || !abandoned.isEmpty()) {
-            s.append("\nFailures:\n\n");
+            s.append("\nFailures by kind:\n\n| failures | what |\n|---:|---|\n");
+            failureKinds.entrySet().stream()
+                    .sorted(Map.Entry.<String, Long>comparingByValue().reversed().thenComparing(Map.Entry.comparingByKey()))
+                    .forEach(e -> s.append("| ").append(e.getValue()).append(" | ").append(e.getKey().replace("|", "\\|"))
+                            .append(" |\n"));
+            s.append("\nThe first failures:\n\n");
             for (String f : failures) {
                 s.append("- ").append(f).append('\n');
             }

@@ -2,13 +2,12 @@ package ray.scene;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
+import java.io.UnsupportedEncodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.Locale;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import javax.xml.XMLConstants;
 import javax.xml.parsers.DocumentBuilderFactory;
 import javax.xml.parsers.ParserConfigurationException;
@@ -72,7 +71,7 @@ final class PositionalXml {
             int line = Math.max(1, e.getLineNumber());
             int column = Math.max(1, e.getColumnNumber());
             String text = new String(bytes, StandardCharsets.UTF_8);
-            if (ENDS_INSIDE_MARKUP.equals(e.getMessage()) && !builder.open.isEmpty()) {
+            if (XmlProblems.ENDS_INSIDE_MARKUP.equals(e.getMessage()) && !builder.open.isEmpty()) {
                 // A comment or CDATA section left open: point at where it starts, not at the end of the file.
                 SceneException unclosed = unclosedAtEnd(file, text, "<!--", "-->", "comment");
                 if (unclosed == null) {
@@ -82,73 +81,15 @@ final class PositionalXml {
                     throw unclosed;
                 }
             }
-            throw new SceneException(file, line, column, parseProblem(e, builder, text, line, column));
+            String open = builder.open.isEmpty() ? null : builder.open.peek().getTagName();
+            throw new SceneException(file, line, column, XmlProblems.of(e.getMessage(), open, builder.anyElement, text, line, column));
+        } catch (UnsupportedEncodingException e) {
+            // Raised for the encoding named in <?xml ... encoding="..."?>, which is on line 1.
+            throw new SceneException(file, 1, 1, "encoding \"" + SceneException.excerpt(String.valueOf(e.getMessage()))
+                    + "\" is not supported; expected encoding=\"UTF-8\" (or no encoding)");
         } catch (SAXException | IOException e) {
-            throw new SceneException(file, 1, 1, "cannot parse the XML (" + e.getMessage() + ")");
+            throw new SceneException(file, 1, 1, "cannot parse the XML (" + e.getMessage() + "); expected a well-formed XML file");
         }
-    }
-
-    /** What the parser says when the file ends inside an element, comment or CDATA section. */
-    private static final String ENDS_INSIDE_MARKUP = "XML document structures must start and end within the same entity.";
-    private static final Pattern UNMATCHED_END_TAG =
-            Pattern.compile("The element type \"([^\"]*)\" must be terminated by the matching end-tag .*");
-    private static final Pattern LESS_THAN_IN_ATTRIBUTE = Pattern.compile("The value of attribute \"([^\"]*)\" associated with"
-            + " an element type \"([^\"]*)\" must not contain the '<' character\\.");
-
-    /**
-     * The problem the parser found, in our own words for the mistakes people make most (a misspelt or
-     * missing end tag, a file cut short, a missing quote, text outside the root) and in the parser's
-     * (English) words otherwise.
-     */
-    private static String parseProblem(SAXParseException e, Builder builder, String text, int line, int column) {
-        String message = e.getMessage() == null ? "" : e.getMessage();
-        if (message.contains("DOCTYPE")) {
-            return "a DOCTYPE is not allowed in a scene file; expected plain XML, without entities or external files";
-        }
-        Matcher m = UNMATCHED_END_TAG.matcher(message);
-        if (m.matches()) {
-            String open = m.group(1);
-            String endTag = endTagAt(text, line, column);
-            return "malformed XML: " + (endTag != null ? "</" + endTag + ">" : "an end tag") + " does not close <" + open
-                    + ">; expected </" + open + ">";
-        }
-        m = LESS_THAN_IN_ATTRIBUTE.matcher(message);
-        if (m.matches()) {
-            return "malformed XML: the value of attribute " + m.group(1) + " of <" + m.group(2) + "> runs into a '<'; "
-                    + "expected its closing quote before that (write a '<' inside a value as &lt;)";
-        }
-        if (message.equals(ENDS_INSIDE_MARKUP) && !builder.open.isEmpty()) {
-            String open = builder.open.peek().getTagName();
-            return "malformed XML: the file ends before <" + open + "> is closed; expected </" + open + ">";
-        }
-        if (message.equals("Premature end of file.") && !builder.anyElement) {
-            return text.isBlank() ? "the file is empty; expected a <scene> element"
-                    : "the file has no elements; expected a <scene> element";
-        }
-        if (message.equals("Content is not allowed in prolog.")) {
-            return "malformed XML: text before the first element;"
-                    + " expected the file to start with <scene> (or an <?xml ...?> declaration)";
-        }
-        // The parser's sentences end with a full stop; ours do not.
-        return "malformed XML: " + (message.endsWith(".") ? message.substring(0, message.length() - 1) : message);
-    }
-
-    /** The name in the end tag ({@code </name>}) that the parser stopped in, or null if it is not found there. */
-    private static String endTagAt(String text, int line, int column) {
-        String[] lines = text.split("\r\n|\r|\n", -1);
-        if (line > lines.length) {
-            return null;
-        }
-        String l = lines[line - 1];
-        int start = l.lastIndexOf("</", Math.min(column - 1, l.length()));
-        if (start < 0) {
-            return null;
-        }
-        int end = start + 2;
-        while (end < l.length() && l.charAt(end) != '>' && !Character.isWhitespace(l.charAt(end))) {
-            end++;
-        }
-        return end > start + 2 ? SceneException.excerpt(l.substring(start + 2, end)) : null;
     }
 
     /**

@@ -87,8 +87,7 @@ public class SceneLoaderXmlErrorsTest {
     }
 
     @Test
-    public void otherMalformedXmlIsReportedInTheParsersEnglishWords() {
-        // A bare '&' is rare enough to keep the words of the JDK's parser, which the loader asks for in English.
+    public void bareAmpersandAsksForItsEntity() {
         Path file = SceneFixtures.write(folder, "bad.xml", """
                 <scene>
                   <camera type="PerspectiveCamera"/>
@@ -97,7 +96,47 @@ public class SceneLoaderXmlErrorsTest {
                 """);
         // The parser stops just past the '&' in column 12.
         SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 13,
-                "malformed XML: The entity name must immediately follow the '&' in the entity reference");
+                "malformed XML: a '&' that starts no entity; expected &amp; for an '&' in text");
+    }
+
+    @Test
+    public void attributeGivenTwiceIsReportedOnItsElement() {
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <scene>
+                  <camera type="PerspectiveCamera" type="OrthographicCamera"/>
+                  <image>4 3</image>
+                </scene>
+                """);
+        // Located where the start tag ends, as every element is.
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 61,
+                "malformed XML: attribute type is given twice on <camera>; expected each attribute once");
+    }
+
+    @Test
+    public void bytesThatAreNotUtf8AreReportedWhereTheyAre() throws Exception {
+        Path file = folder.getRoot().toPath().resolve("latin1.xml");
+        java.nio.file.Files.write(file, "<scene>\n  <image>4 3</image> <!-- gr\u00f6\u00dfe -->\n</scene>\n"
+                .getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 29,
+                "malformed XML: this is not UTF-8 text; expected a scene file saved as UTF-8 (or ASCII), not as Latin-1 or Windows-1252");
+    }
+
+    @Test
+    public void controlCharacterInTextIsNamedByItsCodePoint() {
+        Path file = SceneFixtures.write(folder, "bad.xml", "<scene>\n  <image>4\u0001 3</image>\n</scene>\n");
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 2, 11,
+                "malformed XML: character U+0001 is not allowed in XML (in element text); expected printable text");
+    }
+
+    @Test
+    public void otherMalformedXmlKeepsTheParsersEnglishWords() {
+        // A rare mistake keeps the words of the JDK's parser, which the loader asks for in English.
+        Path file = SceneFixtures.write(folder, "bad.xml", """
+                <?xml version="1.0" standalone="maybe"?>
+                <scene/>
+                """);
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 39, "malformed XML: The standalone document declaration"
+                + " value must be \"yes\" or \"no\", not \"maybe\"; expected well-formed XML");
     }
 
     @Test
