@@ -20,10 +20,17 @@ final class XmlProblems {
     private static final Pattern UNMATCHED_END_TAG =
             Pattern.compile("The element type \"([^\"]*)\" must be terminated by the matching end-tag .*");
 
-    /** A parser message and the problem it stands for, built from the message's quoted parts. */
-    private record Translation(Pattern message, Function<Matcher, String> problem) {
+    /**
+     * A parser message and the problem it stands for, built from the message's quoted parts. (A
+     * class, not a record: Gradle 4.4 cannot read a record's class file on the compile classpath.)
+     */
+    private static final class Translation {
+        final Pattern message;
+        final Function<Matcher, String> problem;
+
         Translation(String regex, Function<Matcher, String> problem) {
-            this(Pattern.compile(regex), problem);
+            this.message = Pattern.compile(regex);
+            this.problem = problem;
         }
     }
 
@@ -111,9 +118,9 @@ final class XmlProblems {
                     + " expected the file to start with <scene> (or an <?xml ...?> declaration)";
         }
         for (Translation t : TRANSLATIONS) {
-            Matcher match = t.message().matcher(m);
+            Matcher match = t.message.matcher(m);
             if (match.matches()) {
-                return "malformed XML: " + t.problem().apply(match);
+                return "malformed XML: " + t.problem.apply(match);
             }
         }
         return "malformed XML: " + withoutFullStop(m) + "; expected well-formed XML";

@@ -39,17 +39,30 @@ final class SceneFixtures {
     }
 
     /**
-     * Takes every permission away from {@code file}, and skips the calling test (an assumption
-     * failure) where that does not stop this process from reading it: for root, or on a file system
-     * without POSIX permissions.
+     * Makes {@code file} unreadable and returns the reason the loader will give. Taking every
+     * permission away does it for an ordinary user ("permission denied"); root reads any file, so
+     * there (and on a file system without POSIX permissions) the file becomes a link to Linux's
+     * /proc/self/mem, whose first page no process can read ("Input/output error"). Where neither
+     * works the calling test is skipped (an assumption failure).
      */
-    static void makeUnreadable(Path file) {
+    static String makeUnreadable(Path file) {
         try {
             Files.setPosixFilePermissions(file, Set.of());
+            if (!Files.isReadable(file)) {
+                return "permission denied";
+            }
         } catch (UnsupportedOperationException | IOException e) {
-            Assume.assumeNoException("no POSIX permissions here", e);
+            // no POSIX permissions here: try the other way
         }
-        Assume.assumeFalse("this user (root?) can read a file without permissions", Files.isReadable(file));
+        Path memory = Path.of("/proc/self/mem");
+        Assume.assumeTrue("no way to make a file unreadable here", Files.exists(memory));
+        try {
+            Files.delete(file);
+            Files.createSymbolicLink(file, memory);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return "Input/output error";
     }
 
     /** Loads a scene whose {@code <scene>} holds a camera, an image size and then {@code body}. */

@@ -360,10 +360,10 @@ public class SceneLoaderNameErrorsTest {
     @Test
     public void unreadableMeshFileIsReportedInThatFile() {
         Path obj = SceneFixtures.write(folder, "locked.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-        SceneFixtures.makeUnreadable(obj);
+        String reason = SceneFixtures.makeUnreadable(obj);
         SceneException e = SceneFixtures.loadError(meshScene("locked.obj"));
         SceneFixtures.assertError(e, obj.toAbsolutePath(), 1, 1,
-                "the file cannot be read (permission denied); expected a readable OBJ file");
+                "the file cannot be read (" + reason + "); expected a readable OBJ file");
     }
 
     /** A scene file, mesh.xml, whose line 5 is {@code <data>dataText</data>} in a Mesh. */

@@ -167,9 +167,9 @@ public class SceneLoaderXmlErrorsTest {
     @Test
     public void unreadableFileIsReportedAsSuch() throws Exception {
         Path file = SceneFixtures.write(folder, "locked.xml", "<scene/>\n");
-        SceneFixtures.makeUnreadable(file);
+        String reason = SceneFixtures.makeUnreadable(file);
         SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1,
-                "the file cannot be read (permission denied); expected a readable scene file");
+                "the file cannot be read (" + reason + "); expected a readable scene file");
     }
 
     @Test
