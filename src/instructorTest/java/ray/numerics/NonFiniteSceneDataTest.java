@@ -199,7 +199,7 @@ public class NonFiniteSceneDataTest {
         assertRefused("is not below maxPt", box::complete);
         Group scaled = new Group();
         scaled.setScale(v(NAN, 1, 1));
-        assertRefused("singular", scaled::complete);
+        assertRefused("cannot be inverted (its determinant is NaN)", scaled::complete);
     }
 
     private static void assertRefused(String message, Runnable build) {

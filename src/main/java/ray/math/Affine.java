@@ -99,7 +99,8 @@ public final class Affine {
     public Affine inverse() {
         double det = determinant();
         if (det == 0 || !Double.isFinite(det)) {
-            throw new IllegalArgumentException("the transform is singular (a scale of zero?) and cannot be inverted");
+            throw new IllegalArgumentException("the transform cannot be inverted (its determinant is " + det
+                    + "); expected scales and rotations whose product is nonzero and finite");
         }
         double[] m = {
             (a[4] * a[8] - a[5] * a[7]) / det, (a[2] * a[7] - a[1] * a[8]) / det, (a[1] * a[5] - a[2] * a[4]) / det,

@@ -152,7 +152,16 @@ public class AffineTest {
             Affine.scale(v(1, 0, 1)).inverse();
             fail("a zero scale is not invertible");
         } catch (IllegalArgumentException expected) {
-            // the message suggests a zero scale
+            assertEquals("the transform cannot be inverted (its determinant is 0.0); expected scales and rotations whose"
+                    + " product is nonzero and finite", expected.getMessage());
+        }
+        try {
+            // 5 · 5 · 1.8e308 overflows: the inverse would scale by 0 and lose the axis.
+            Affine.scale(v(5, 5, Double.MAX_VALUE)).inverse();
+            fail("a scale whose determinant overflows is not invertible");
+        } catch (IllegalArgumentException expected) {
+            assertEquals("the transform cannot be inverted (its determinant is Infinity); expected scales and rotations whose"
+                    + " product is nonzero and finite", expected.getMessage());
         }
     }
 

@@ -292,6 +292,24 @@ public class SceneLoaderValueErrorsTest {
                 "invalid Group: scale (1.0, 0.0, 1.0) is zero on an axis; expected a nonzero scale on every axis");
     }
 
+    /** Found by the fuzzer: no factor is zero, but their product overflows, so the transform has no inverse. */
+    @Test
+    public void scaleWhoseProductOverflowsIsRefused() {
+        SceneFixtures.write(folder, "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        SceneException e = loadError("""
+                <scene>
+                  <camera type="PerspectiveCamera"/>
+                  <image>4 3</image>
+                  <surface type="Mesh">
+                    <data>m.obj</data>
+                    <scale>5 5 1.7976931348623157e308</scale>
+                  </surface>
+                </scene>
+                """);
+        SceneFixtures.assertError(e, bad(), 4, 24, "invalid Mesh: the transform cannot be inverted (its determinant is"
+                + " Infinity); expected scales and rotations whose product is nonzero and finite");
+    }
+
     @Test
     public void emptyMeshPathAsksForAFile() {
         SceneException e = loadError("""
