@@ -12,12 +12,13 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.function.Function;
 
 /**
  * The seeded mutational fuzzer: runs cases 0 … n−1 of a seed over the corpus on a number of
  * workers, each in its own copy of the scenes, and gathers a {@link FuzzSummary}. A case that has
  * not ended after {@link #CASE_SECONDS} is a hang; the worker that ran it stops there (its thread
- * may never return), and the others go on.
+ * may never return), and the others go on. A runner that throws fails its case only.
  */
 final class Fuzzer {
     /** A case renders a 4×4 window in milliseconds; this long means the framework is stuck. */
@@ -29,13 +30,24 @@ final class Fuzzer {
     private final int workers;
     /** Where the damaged files of failed cases are kept for replay (null: not kept). */
     private final Path failures;
+    /** Makes the runner of one worker from its copy of the corpus. */
+    private final Function<Path, Function<FuzzCase, Outcome>> runners;
+    private final int caseSeconds;
 
     Fuzzer(Corpus corpus, Path work, long seed, int workers, Path failures) {
+        this(corpus, work, seed, workers, failures, folder -> new CaseRunner(corpus, folder)::run, CASE_SECONDS);
+    }
+
+    /** With another runner and time limit, so that a test can check how hangs and crashes of a case are caught. */
+    Fuzzer(Corpus corpus, Path work, long seed, int workers, Path failures, Function<Path, Function<FuzzCase, Outcome>> runners,
+            int caseSeconds) {
         this.corpus = corpus;
         this.work = work;
         this.seed = seed;
         this.workers = workers;
         this.failures = failures;
+        this.runners = runners;
+        this.caseSeconds = caseSeconds;
     }
 
     FuzzSummary run(long cases) throws InterruptedException {
@@ -58,7 +70,7 @@ final class Fuzzer {
     private void work(int worker, long cases, FuzzSummary summary) {
         Path folder = work.resolve("worker-" + worker);
         corpus.copyTo(folder);
-        CaseRunner runner = new CaseRunner(corpus, folder);
+        Function<FuzzCase, Outcome> runner = runners.apply(folder);
         ExecutorService executor = Executors.newSingleThreadExecutor(r -> {
             Thread t = new Thread(r, "fuzz-case-" + worker);
             t.setDaemon(true);
@@ -67,13 +79,13 @@ final class Fuzzer {
         try {
             for (long i = worker; i < cases; i += workers) {
                 FuzzCase c = FuzzCase.of(corpus, seed, i);
-                Future<Outcome> future = executor.submit(() -> runner.run(c));
+                Future<Outcome> future = executor.submit(() -> runner.apply(c));
                 Outcome outcome;
                 try {
-                    outcome = future.get(CASE_SECONDS, TimeUnit.SECONDS);
+                    outcome = future.get(caseSeconds, TimeUnit.SECONDS);
                 } catch (TimeoutException e) {
                     future.cancel(true);
-                    outcome = Outcome.failed("no result after " + CASE_SECONDS + " s (a hang)", TimeUnit.SECONDS.toNanos(CASE_SECONDS));
+                    outcome = Outcome.failed("no result after " + caseSeconds + " s (a hang)", TimeUnit.SECONDS.toNanos(caseSeconds));
                     record(summary, c, outcome);
                     summary.abandoned(worker, i);
                     return;

@@ -9,6 +9,7 @@ import static org.junit.Assert.assertTrue;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
@@ -41,6 +42,33 @@ public class FuzzerTest {
             long[] r = summary.row(row);
             assertTrue(row + " ran", r[0] + r[1] + r[2] > 20);
         }
+    }
+
+    /** The fuzzer's own net: a case that hangs or whose runner throws is a failure, and the run still ends. */
+    @Test(timeout = 60_000)
+    public void aHangingOrCrashingCaseIsAFailureAndTheRunEnds() throws Exception {
+        Path work = FOLDER.newFolder("net").toPath();
+        FuzzSummary summary = new Fuzzer(Corpus.of(Path.of("scenes")), work, SEED, 2, null, folder -> c -> {
+            if (c.index == 3) {
+                // Hangs until the fuzzer gives up and interrupts it (so that no thread spins on after the test).
+                while (!Thread.currentThread().isInterrupted()) {
+                    Thread.onSpinWait();
+                }
+                return Outcome.rendered(0, 1);
+            }
+            if (c.index == 4) {
+                throw new IllegalStateException("a runner bug");
+            }
+            return Outcome.rendered(0, 1);
+        }, 1).run(40);
+        assertEquals(2, summary.failed());
+        List<String> failures = summary.failures();
+        assertTrue(failures.toString(), failures.stream().anyMatch(f -> f.startsWith("case 3: ") && f.endsWith(": no result after 1 s (a hang)")));
+        assertTrue(failures.toString(), failures.stream().anyMatch(f -> f.startsWith("case 4: ")
+                && f.contains(": the case runner threw java.lang.IllegalStateException: a runner bug")));
+        // Case 3's worker (odd cases) stopped there; the other ran all its 20 cases.
+        assertEquals(2 + 20, summary.done());
+        assertTrue(summary.markdown(), summary.markdown().contains("worker 1 stopped at case 3 (a hang)"));
     }
 
     @Test
