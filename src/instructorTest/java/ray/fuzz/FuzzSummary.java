@@ -116,9 +116,11 @@ final class FuzzSummary {
     static String kindOf(String problem) {
         return problem.replaceAll("\"[^\"]*\"", "\"…\"")
                 .replaceAll("'[^']*'", "'…'")
-                .replaceAll("(/[^\\s;:]+)+", "PATH")
-                .replaceAll("[-+]?\\d+(\\.\\d+)?([eE][-+]?\\d+)?", "N")
-                .replaceAll("<[^<>\\s]+>", "<…>");
+                // An absolute path (after a space), not the "/" of an end tag.
+                .replaceAll("(?<=\\s)/[^\\s;:]+", "PATH")
+                // A number standing alone, not the 8 of UTF-8.
+                .replaceAll("(?<![\\w.-])[-+]?\\d+(\\.\\d+)?([eE][-+]?\\d+)?", "N")
+                .replaceAll("<(/?)[^<>\\s/]+>", "<$1…>");
     }
 
     synchronized String markdown() {
