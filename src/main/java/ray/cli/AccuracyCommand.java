@@ -54,8 +54,8 @@ public final class AccuracyCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "Do not print a line per measured setting.")
     boolean quiet;
 
-    @Option(names = "--verbose", description = "Show the stack trace of unexpected failures.")
-    boolean verbose;
+    @CommandLine.Mixin
+    Verbosity verbosity;
 
     @Parameters(arity = "1..*", paramLabel = "SCENE.xml|DIR", description = "Scene files or folders of them.")
     List<Path> scenes;
@@ -101,10 +101,7 @@ public final class AccuracyCommand implements Callable<Integer> {
                 err.println("error: " + e.getMessage());
                 failures++;
             } catch (RuntimeException e) {
-                err.println("error: " + file + ": " + Errors.oneLine(e));
-                if (verbose) {
-                    e.printStackTrace(err);
-                }
+                verbosity.report(err, file.toString(), e);
                 failures++;
             }
             err.flush();

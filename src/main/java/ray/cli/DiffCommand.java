@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.concurrent.Callable;
 import javax.imageio.ImageIO;
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -42,9 +43,8 @@ public final class DiffCommand implements Callable<Integer> {
             description = "Also write a heat map: black where equal, blue within the tolerance, red to yellow to white beyond it.")
     Path heatMap;
 
-    /** Read by {@link Ray1Command}'s handler of unexpected failures: this command reports its own errors in one line. */
-    @Option(names = "--verbose", description = "Show the stack trace of unexpected failures.")
-    boolean verbose;
+    @CommandLine.Mixin
+    Verbosity verbosity;
 
     @Spec
     CommandSpec spec;

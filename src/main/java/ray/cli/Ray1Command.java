@@ -26,13 +26,11 @@ public final class Ray1Command implements Runnable {
         CommandLine commandLine = new CommandLine(new Ray1Command());
         commandLine.setOut(out);
         commandLine.setErr(err);
-        // A failure that escapes a command is reported in one line, and its stack trace only on request.
-        boolean verbose = java.util.Arrays.asList(args).contains("--verbose");
+        // A failure that escapes a command is reported in one line, and its stack trace only if that
+        // command was given --verbose.
         commandLine.setExecutionExceptionHandler((e, cl, parseResult) -> {
-            cl.getErr().println("error: " + Errors.oneLine(e));
-            if (verbose) {
-                e.printStackTrace(cl.getErr());
-            }
+            Object mixin = cl.getMixins().get("verbosity");
+            (mixin instanceof Verbosity ? (Verbosity) mixin : new Verbosity()).report(cl.getErr(), null, e);
             return 1;
         });
         return commandLine.execute(args);

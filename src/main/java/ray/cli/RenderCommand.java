@@ -54,8 +54,8 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the figures as JSON to this file.")
     Path statsFile;
 
-    @Option(names = "--verbose", description = "Show the stack trace of unexpected failures.")
-    boolean verbose;
+    @CommandLine.Mixin
+    Verbosity verbosity;
 
     @Parameters(arity = "1..*", paramLabel = "SCENE.xml|DIR", description = "Scene files or folders of them.")
     List<Path> scenes;
@@ -109,10 +109,7 @@ public final class RenderCommand implements Callable<Integer> {
                 err.println("error: " + e.getMessage());
                 failures++;
             } catch (IOException | RuntimeException e) {
-                err.println("error: " + file + ": " + Errors.oneLine(e));
-                if (verbose) {
-                    e.printStackTrace(err);
-                }
+                verbosity.report(err, file.toString(), e);
                 failures++;
             }
             out.flush();

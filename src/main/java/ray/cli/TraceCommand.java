@@ -36,8 +36,8 @@ public final class TraceCommand implements Callable<Integer> {
     @Option(names = "--samples", paramLabel = "N", description = "Samples per pixel, as for `ray1 render --samples`.")
     Integer samples;
 
-    @Option(names = "--verbose", description = "Show the stack trace of unexpected failures.")
-    boolean verbose;
+    @CommandLine.Mixin
+    Verbosity verbosity;
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
@@ -54,10 +54,7 @@ public final class TraceCommand implements Callable<Integer> {
             err.println("error: " + e.getMessage());
             return 1;
         } catch (RuntimeException e) {
-            err.println("error: " + sceneFile + ": " + Errors.oneLine(e));
-            if (verbose) {
-                e.printStackTrace(err);
-            }
+            verbosity.report(err, sceneFile.toString(), e);
             return 1;
         }
         String problem = PixelTrace.outOfRange(scene, sceneFile.toString(), x, y);
