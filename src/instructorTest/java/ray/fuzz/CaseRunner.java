@@ -40,19 +40,19 @@ final class CaseRunner {
         this.folder = folder;
     }
 
-    Outcome run(FuzzCase c) {
+    /** Runs the case with its damaged file, {@code damaged} (see {@link #damaged}). */
+    Outcome run(FuzzCase c, byte[] damaged) {
         Path target = folder.resolve(c.target.toString());
-        byte[] original = corpus.original(c.target);
-        write(target, c.damage(original));
+        write(target, damaged);
         long start = System.nanoTime();
         try {
             return loadAndRender(folder.resolve(c.scene.toString()), start);
         } finally {
-            write(target, original);
+            write(target, corpus.original(c.target));
         }
     }
 
-    /** The bytes the case writes, for a failure to be kept and replayed. */
+    /** The bytes the case writes in place of its target. */
     static byte[] damaged(Corpus corpus, FuzzCase c) {
         return c.damage(corpus.original(c.target));
     }

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -28,11 +29,19 @@ final class Corpus {
     final List<Path> scenes;
     /** Per scene, the meshes it names (relative to the root). */
     final Map<Path, List<Path>> meshes;
+    /** The bytes of every scene and mesh, read once: each case starts from them. */
+    private final Map<Path, byte[]> originals = new HashMap<>();
 
     private Corpus(Path root, List<Path> scenes, Map<Path, List<Path>> meshes) {
         this.root = root;
         this.scenes = scenes;
         this.meshes = meshes;
+        for (Path scene : scenes) {
+            originals.put(scene, readBytes(root.resolve(scene)));
+            for (Path mesh : meshes.get(scene)) {
+                originals.computeIfAbsent(mesh, m -> readBytes(root.resolve(m)));
+            }
+        }
     }
 
     static Corpus of(Path root) {
@@ -56,10 +65,14 @@ final class Corpus {
         return new Corpus(root, Collections.unmodifiableList(scenes), meshes);
     }
 
-    /** The original bytes of a corpus file. */
+    /** The original bytes of a scene or mesh of the corpus (a copy: the caller may change it). */
     byte[] original(Path relative) {
+        return originals.get(relative).clone();
+    }
+
+    private static byte[] readBytes(Path file) {
         try {
-            return Files.readAllBytes(root.resolve(relative));
+            return Files.readAllBytes(file);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

@@ -40,7 +40,8 @@ public final class FuzzMain implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         if (replay != null) {
-            return replay(Corpus.of(scenes), FuzzCase.of(Corpus.of(scenes), seed, replay));
+            Corpus corpus = Corpus.of(scenes);
+            return replay(corpus, FuzzCase.of(corpus, seed, replay));
         }
         int workers = threads != null ? threads : Runtime.getRuntime().availableProcessors();
         Path work = Files.createTempDirectory("ray1-fuzz");
@@ -56,10 +57,11 @@ public final class FuzzMain implements Callable<Integer> {
     private int replay(Corpus corpus, FuzzCase c) throws Exception {
         Path kept = output.resolve("case-" + c.index).resolve(c.target.toString());
         Files.createDirectories(kept.getParent());
-        Files.write(kept, CaseRunner.damaged(corpus, c));
+        byte[] damaged = CaseRunner.damaged(corpus, c);
+        Files.write(kept, damaged);
         Path work = Files.createTempDirectory("ray1-fuzz");
         corpus.copyTo(work);
-        Outcome o = new CaseRunner(corpus, work).run(c);
+        Outcome o = new CaseRunner(corpus, work).run(c, damaged);
         System.out.println(c + "\n  damaged file: " + kept + "\n  " + o.kind
                 + (o.message != null ? ": " + o.message : "") + (o.nonFinitePixels > 0 ? ", " + o.nonFinitePixels
                 + " pixels not finite" : ""));

@@ -5,6 +5,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -12,6 +13,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.function.BiFunction;
 import java.util.function.Function;
 
 /**
@@ -31,7 +33,7 @@ final class Fuzzer {
     /** Where the damaged files of failed cases are kept for replay (null: not kept). */
     private final Path failures;
     /** Makes the runner of one worker from its copy of the corpus. */
-    private final Function<Path, Function<FuzzCase, Outcome>> runners;
+    private final Function<Path, BiFunction<FuzzCase, byte[], Outcome>> runners;
     private final int caseSeconds;
 
     Fuzzer(Corpus corpus, Path work, long seed, int workers, Path failures) {
@@ -39,7 +41,8 @@ final class Fuzzer {
     }
 
     /** With another runner and time limit, so that a test can check how hangs and crashes of a case are caught. */
-    Fuzzer(Corpus corpus, Path work, long seed, int workers, Path failures, Function<Path, Function<FuzzCase, Outcome>> runners,
+    Fuzzer(Corpus corpus, Path work, long seed, int workers, Path failures,
+            Function<Path, BiFunction<FuzzCase, byte[], Outcome>> runners,
             int caseSeconds) {
         this.corpus = corpus;
         this.work = work;
@@ -70,7 +73,7 @@ final class Fuzzer {
     private void work(int worker, long cases, FuzzSummary summary) {
         Path folder = work.resolve("worker-" + worker);
         corpus.copyTo(folder);
-        Function<FuzzCase, Outcome> runner = runners.apply(folder);
+        BiFunction<FuzzCase, byte[], Outcome> runner = runners.apply(folder);
         ExecutorService executor = Executors.newSingleThreadExecutor(r -> {
             Thread t = new Thread(r, "fuzz-case-" + worker);
             t.setDaemon(true);
@@ -79,14 +82,15 @@ final class Fuzzer {
         try {
             for (long i = worker; i < cases; i += workers) {
                 FuzzCase c = FuzzCase.of(corpus, seed, i);
-                Future<Outcome> future = executor.submit(() -> runner.apply(c));
+                byte[] damaged = CaseRunner.damaged(corpus, c);
+                Future<Outcome> future = executor.submit(() -> runner.apply(c, damaged));
                 Outcome outcome;
                 try {
                     outcome = future.get(caseSeconds, TimeUnit.SECONDS);
                 } catch (TimeoutException e) {
                     future.cancel(true);
                     outcome = Outcome.failed("no result after " + caseSeconds + " s (a hang)", TimeUnit.SECONDS.toNanos(caseSeconds));
-                    record(summary, c, outcome);
+                    record(summary, c, damaged, outcome);
                     summary.abandoned(worker, i);
                     return;
                 } catch (ExecutionException e) {
@@ -95,27 +99,26 @@ final class Fuzzer {
                     Thread.currentThread().interrupt();
                     return;
                 }
-                record(summary, c, outcome);
+                record(summary, c, damaged, outcome);
             }
         } finally {
             executor.shutdownNow();
         }
     }
 
-    private void record(FuzzSummary summary, FuzzCase c, Outcome outcome) {
-        boolean unchanged = java.util.Arrays.equals(CaseRunner.damaged(corpus, c), corpus.original(c.target));
-        summary.add(c, outcome, unchanged);
+    private void record(FuzzSummary summary, FuzzCase c, byte[] damaged, Outcome outcome) {
+        summary.add(c, outcome, Arrays.equals(damaged, corpus.original(c.target)));
         if (outcome.kind == Outcome.Kind.FAILED && failures != null) {
-            keep(c);
+            keep(c, damaged);
         }
     }
 
     /** Writes the damaged file of a failed case under failures/case-N/, at its path in the corpus. */
-    private void keep(FuzzCase c) {
+    private void keep(FuzzCase c, byte[] damaged) {
         try {
             Path copy = failures.resolve("case-" + c.index).resolve(c.target.toString());
             Files.createDirectories(copy.getParent());
-            Files.write(copy, CaseRunner.damaged(corpus, c));
+            Files.write(copy, damaged);
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

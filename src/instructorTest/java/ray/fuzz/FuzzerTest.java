@@ -48,7 +48,7 @@ public class FuzzerTest {
     @Test(timeout = 60_000)
     public void aHangingOrCrashingCaseIsAFailureAndTheRunEnds() throws Exception {
         Path work = FOLDER.newFolder("net").toPath();
-        FuzzSummary summary = new Fuzzer(Corpus.of(Path.of("scenes")), work, SEED, 2, null, folder -> c -> {
+        FuzzSummary summary = new Fuzzer(Corpus.of(Path.of("scenes")), work, SEED, 2, null, folder -> (c, damaged) -> {
             if (c.index == 3) {
                 // Hangs until the fuzzer gives up and interrupts it (so that no thread spins on after the test).
                 while (!Thread.currentThread().isInterrupted()) {
