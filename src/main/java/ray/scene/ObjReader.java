@@ -1,7 +1,8 @@
 package ray.scene;
 
-import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.Reader;
 import java.nio.ByteBuffer;
 import java.nio.CharBuffer;
 import java.nio.charset.CoderResult;
@@ -60,7 +61,8 @@ public final class ObjReader {
         FileProblems.checkIsFile(file, KIND);
         // Read byte for byte (every byte is a Latin-1 character), so that no byte can stop the reading
         // with a decoder's exception; statement() then checks that each statement is UTF-8 text.
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
+        // BoundedLines buffers the text itself, so no BufferedReader is needed.
+        try (Reader in = new InputStreamReader(Files.newInputStream(file), StandardCharsets.ISO_8859_1)) {
             BoundedLines lines = new BoundedLines(in, Limits.MAX_OBJ_LINE);
             String line;
             while ((line = lines.next()) != null) {
