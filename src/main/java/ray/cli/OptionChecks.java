@@ -23,7 +23,7 @@ final class OptionChecks {
     /** An optional samples-per-pixel count: between 1 and {@link Limits#MAX_SAMPLES}. */
     static void samples(CommandLine cl, String option, Integer value) {
         atLeastOne(cl, option, value);
-        if (value != null && Limits.samplesProblem(value) != null) {
+        if (value != null && value > Limits.MAX_SAMPLES) {
             throw new CommandLine.ParameterException(cl, option + " must be at most " + Limits.MAX_SAMPLES + ", got " + value);
         }
     }
