@@ -43,7 +43,7 @@ public final class Limits {
     }
 
     /** Checks a samples-per-pixel count; null when it is within the limit. */
-    public static String samplesProblem(int samples) {
+    static String samplesProblem(int samples) {
         return samples > MAX_SAMPLES ? "samples is " + samples + "; expected at most " + MAX_SAMPLES + " per pixel" : null;
     }
 }
