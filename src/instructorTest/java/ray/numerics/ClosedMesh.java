@@ -6,7 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import ray.math.Vec3;
-import ray.surface.Icosphere;
+import ray.tools.Icosphere;
 import ray.surface.Mesh;
 import ray.surface.MeshData;
 

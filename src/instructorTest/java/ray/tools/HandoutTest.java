@@ -55,8 +55,30 @@ public class HandoutTest {
             assertTrue("the handout lacks " + required, files.contains(required));
         }
         for (String file : files) {
-            assertFalse(file, file.startsWith("src/instructorTest/") || file.startsWith("src/main/java/ray/grading/")
-                    || file.startsWith("src/main/java/ray/tools/") || file.startsWith(".ci/") || file.equals("docs/instructor.md"));
+            assertFalse(file, file.startsWith("src/instructor") || file.startsWith(".ci/") || file.startsWith("build/")
+                    || file.equals("gradle/instructor.gradle") || file.equals("docs/instructor.md"));
+        }
+    }
+
+    @Test
+    public void theBuildAndReadmeLoseTheirInstructorSections() throws Exception {
+        String build = Files.readString(handout.resolve("build.gradle"), StandardCharsets.UTF_8);
+        assertFalse("the handout's build.gradle still applies the instructor's build", build.contains("instructor.gradle"));
+        assertTrue("the handout's build.gradle lost its test set-up", build.contains("Tests: ${result.successfulTestCount} passed"));
+        String readme = Files.readString(handout.resolve("README.md"), StandardCharsets.UTF_8);
+        assertFalse("the handout's README still has the instructor's commands", readme.contains("gradle handout"));
+        assertTrue("the handout's README lost the student's commands", readme.contains("gradle test"));
+    }
+
+    @Test
+    public void instructorSectionsAreCutLineByLine() {
+        String text = "keep 1\n// BEGIN INSTRUCTOR\nsecret\n// END INSTRUCTOR\nkeep 2\n<!-- BEGIN INSTRUCTOR -->\nx\n<!-- END INSTRUCTOR -->\n";
+        assertEquals("keep 1\nkeep 2\n", Handout.withoutInstructorSections(text, "f"));
+        try {
+            Handout.withoutInstructorSections("a\n// BEGIN INSTRUCTOR\nb\n", "build.gradle");
+            org.junit.Assert.fail("an unended section must be refused");
+        } catch (IllegalArgumentException e) {
+            assertEquals("build.gradle:2: BEGIN INSTRUCTOR is never ended", e.getMessage());
         }
     }
 

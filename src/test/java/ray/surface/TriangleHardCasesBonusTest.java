@@ -2,6 +2,7 @@ package ray.surface;
 
 import static org.junit.Assert.fail;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -13,6 +14,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.scene.ObjReader;
 import ray.testing.Points;
 import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
@@ -36,8 +38,9 @@ public class TriangleHardCasesBonusTest {
     public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TRIANGLE);
 
     /**
-     * An icosahedron subdivided once (80 triangles sharing 42 vertices by index, radius 1, center at
-     * distance 1 from the origin) and 5,000 rays from inside it, each aimed exactly at a vertex (one
+     * The shipped closed mesh scenes/meshes/icosphere-room.obj (an icosahedron subdivided twice: 320
+     * triangles sharing 162 vertices by index, radius 1), moved to a center at distance 1 from the
+     * origin, and 5,000 rays from inside it, each aimed exactly at a vertex (one
      * in four) or at a point of an edge, rounded to double. Every ray must hit some triangle at the
      * point it was aimed at (t = 1 within 1e-9): a closed mesh has no cracks. Cramer's rule lets
      * 198 of these 5,000 through (4.3% in TriangleSweep); the solution's watertight test, none.
@@ -83,7 +86,7 @@ public class TriangleHardCasesBonusTest {
                     + "): this bonus needs ordinary hits to work first");
         }
         if (through > 0) {
-            fail("closed mesh: " + through + " of " + rays + " rays aimed exactly at edges and vertices shared by the 80 triangles"
+            fail("closed mesh: " + through + " of " + rays + " rays aimed exactly at edges and vertices shared by the 320 triangles"
                     + " of a closed mesh (an icosphere, seen from inside) passed between the triangles, hitting none at the point"
                     + " aimed at (e.g. " + example + "). With Cramer's rule each triangle rounds its own β and γ, so two"
                     + " neighbors can both find a point of their shared edge a hair outside; a watertight test decides a shared"
@@ -293,8 +296,8 @@ public class TriangleHardCasesBonusTest {
     }
 
     /**
-     * {@link ray.surface.Icosphere} subdivided once, as the vertices, triangles and edges the test
-     * walks. Neighboring triangles share vertices by index (the very same Vec3), as a mesh does.
+     * The shipped icosphere mesh moved to {@code center}, as the vertices, triangles and edges the
+     * test walks. Neighboring triangles share vertices by index (the very same Vec3), as a mesh does.
      */
     private static final class IcosphereMesh {
         final List<Vec3> vertices = new ArrayList<>();
@@ -302,10 +305,10 @@ public class TriangleHardCasesBonusTest {
         final List<int[]> edges = new ArrayList<>();
 
         IcosphereMesh(Vec3 center) {
-            MeshData data = Icosphere.of(1, center, 1);
+            MeshData data = ObjReader.read(Path.of("scenes/meshes/icosphere-room.obj"));
             double[] p = data.positions;
             for (int i = 0; i < p.length; i += 3) {
-                vertices.add(new Vec3(p[i], p[i + 1], p[i + 2]));
+                vertices.add(new Vec3(p[i], p[i + 1], p[i + 2]).plus(center));
             }
             int[] tri = data.triangles;
             Set<Long> seen = new HashSet<>();
@@ -319,7 +322,7 @@ public class TriangleHardCasesBonusTest {
                     }
                 }
             }
-            if (triangles.size() != 80 || vertices.size() != 42 || edges.size() != 120) {
+            if (triangles.size() != 320 || vertices.size() != 162 || edges.size() != 480) {
                 throw new IllegalStateException("the test's icosphere is broken: " + triangles.size() + " triangles");
             }
         }

@@ -1,10 +1,11 @@
-package ray.surface;
+package ray.tools;
 
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import ray.math.Vec3;
+import ray.surface.MeshData;
 
 /**
  * A sphere made of triangles: an icosahedron whose faces are split into four at their edge

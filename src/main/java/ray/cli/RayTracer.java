@@ -1,6 +1,4 @@
-package ray;
-
-import ray.cli.Ray1Command;
+package ray.cli;
 
 /** The program's entry point: {@code ray1 render [options] SCENE.xml|DIR ...}; see {@link Ray1Command}. */
 public final class RayTracer {

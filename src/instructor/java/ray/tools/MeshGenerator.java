@@ -8,7 +8,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import ray.math.Vec3;
-import ray.surface.Icosphere;
 import ray.surface.MeshData;
 
 /**
@@ -216,7 +215,7 @@ public final class MeshGenerator {
         }
     }
 
-    // Icosphere room: ray.surface.Icosphere subdivided twice on the unit sphere (320 triangles, 162
+    // Icosphere room: ray.tools.Icosphere subdivided twice on the unit sphere (320 triangles, 162
     // shared vertices), a closed mesh. Its faces are listed reversed, clockwise seen from outside,
     // so that (v1 − v0) × (v2 − v0) points toward the center: a room lit and seen from inside.
     private static final int ICOSPHERE_SUBDIVISIONS = 2;

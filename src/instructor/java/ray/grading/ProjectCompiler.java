@@ -17,13 +17,14 @@ import javax.tools.ToolProvider;
 
 /**
  * Compiles a project tree's main and test sources (src/main/java, src/test/java and, in the
- * instructor's tree, src/instructorTest/java) into one folder, in this JVM, and copies their
+ * instructor's tree, src/instructor/java and src/instructorTest/java) into one folder, in this JVM, and copies their
  * resources beside the classes. The compiler's messages are kept for the student.
  */
 public final class ProjectCompiler {
-    private static final List<String> SOURCE_FOLDERS = List.of("src/main/java", "src/test/java", "src/instructorTest/java");
-    private static final List<String> RESOURCE_FOLDERS = List.of("src/main/resources", "src/test/resources",
-            "src/instructorTest/resources");
+    private static final List<String> SOURCE_FOLDERS = List.of("src/main/java", "src/instructor/java", "src/test/java",
+            "src/instructorTest/java");
+    private static final List<String> RESOURCE_FOLDERS = List.of("src/main/resources", "src/instructor/resources",
+            "src/test/resources", "src/instructorTest/resources");
 
     private ProjectCompiler() {
     }

@@ -1,0 +1,179 @@
+package ray.tools;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.FileVisitResult;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipOutputStream;
+import ray.grading.SolutionMarkers;
+
+/**
+ * Builds the student handout ({@code gradle handout}): a complete Gradle project in
+ * {@code build/handout/ray1/} and the same as {@code build/distributions/ray1-handout.zip}.
+ *
+ * <p>The handout is the project without its instructor part. That part is found by name: every
+ * file or folder whose name starts with {@code instructor} (src/instructor, src/instructorTest,
+ * src/instructorBench, gradle/instructor.gradle, docs/instructor.md), and every section of a text
+ * file between a {@code BEGIN INSTRUCTOR} and an {@code END INSTRUCTOR} line (README.md's
+ * instructor sections, build.gradle's line that applies the instructor's build). Java sources lose
+ * their solution blocks and get their stubs ({@link SolutionMarkers}). What is not the kit at all
+ * (version control, CI, build output) is not copied either. The build fails if any marker survives.
+ */
+public final class Handout {
+    /** Top-level folders that are not part of the kit: version control, CI, build and render output, editor settings. */
+    private static final Set<String> NOT_THE_KIT = Set.of(".git", ".gradle", ".ci", "build", "out", ".idea", ".vscode");
+    /** The first and last line of an instructor section: a Markdown or Gradle comment line. */
+    private static final Pattern SECTION_BEGIN = Pattern.compile("\\s*(<!--|//)\\s*BEGIN INSTRUCTOR\\b.*");
+    private static final Pattern SECTION_END = Pattern.compile("\\s*(<!--|//)\\s*END INSTRUCTOR\\b.*");
+    /** Text that must never reach a student. */
+    private static final List<String> LEAKS = List.of("BEGIN SOLUTION", "END SOLUTION", "// STUB:", "BEGIN INSTRUCTOR",
+            "END INSTRUCTOR");
+
+    private Handout() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        Path project = Path.of(args.length > 0 ? args[0] : ".");
+        Path folder = project.resolve("build/handout/ray1");
+        Path zip = project.resolve("build/distributions/ray1-handout.zip");
+        List<String> files = build(project, folder);
+        zip(folder, zip);
+        System.out.println("handout: " + files.size() + " files in " + folder + " and " + zip);
+    }
+
+    /** Writes the handout into {@code target} (emptied first) and returns its files' relative paths. */
+    public static List<String> build(Path project, Path target) throws IOException {
+        delete(target);
+        List<String> written = new ArrayList<>();
+        for (Path file : kitFiles(project)) {
+            String relative = project.relativize(file).toString().replace('\\', '/');
+            Path destination = target.resolve(relative);
+            Files.createDirectories(destination.getParent());
+            if (relative.endsWith(".java")) {
+                String source = Files.readString(file, StandardCharsets.UTF_8);
+                Files.writeString(destination, SolutionMarkers.studentVersion(source, relative), StandardCharsets.UTF_8);
+            } else if (relative.endsWith(".md") || relative.endsWith(".gradle")) {
+                String text = Files.readString(file, StandardCharsets.UTF_8);
+                Files.writeString(destination, withoutInstructorSections(text, relative), StandardCharsets.UTF_8);
+            } else {
+                Files.copy(file, destination);
+            }
+            written.add(relative);
+        }
+        checkNoLeaks(target, written);
+        return written;
+    }
+
+    /** Every file of the project that ships, sorted: not in the instructor part, not version control or build output. */
+    private static List<Path> kitFiles(Path project) throws IOException {
+        List<Path> files = new ArrayList<>();
+        Files.walkFileTree(project, new SimpleFileVisitor<>() {
+            @Override
+            public FileVisitResult preVisitDirectory(Path dir, BasicFileAttributes attributes) {
+                if (dir.equals(project)) {
+                    return FileVisitResult.CONTINUE;
+                }
+                boolean top = dir.getParent().equals(project);
+                String name = dir.getFileName().toString();
+                return top && NOT_THE_KIT.contains(name) || isInstructorPart(name) ? FileVisitResult.SKIP_SUBTREE
+                        : FileVisitResult.CONTINUE;
+            }
+
+            @Override
+            public FileVisitResult visitFile(Path file, BasicFileAttributes attributes) {
+                if (attributes.isRegularFile() && !isInstructorPart(file.getFileName().toString())) {
+                    files.add(file);
+                }
+                return FileVisitResult.CONTINUE;
+            }
+        });
+        files.sort(null);
+        return files;
+    }
+
+    /** Whether a file or folder of this name is the instructor's: its name starts with "instructor". */
+    static boolean isInstructorPart(String name) {
+        return name.startsWith("instructor");
+    }
+
+    /** {@code text} without its instructor sections (the BEGIN and END lines included). */
+    static String withoutInstructorSections(String text, String fileName) {
+        StringBuilder out = new StringBuilder(text.length());
+        int beganAt = 0;
+        String[] lines = text.split("\n", -1);
+        for (int n = 0; n < lines.length; n++) {
+            String line = lines[n];
+            if (beganAt == 0 && SECTION_BEGIN.matcher(line).matches()) {
+                beganAt = n + 1;
+            } else if (beganAt > 0) {
+                if (SECTION_END.matcher(line).matches()) {
+                    beganAt = 0;
+                }
+            } else {
+                out.append(line);
+                if (n < lines.length - 1) {
+                    out.append('\n');
+                }
+            }
+        }
+        if (beganAt > 0) {
+            throw new IllegalArgumentException(fileName + ":" + beganAt + ": BEGIN INSTRUCTOR is never ended");
+        }
+        return out.toString();
+    }
+
+    private static void checkNoLeaks(Path target, List<String> files) throws IOException {
+        for (String relative : files) {
+            if (!(relative.endsWith(".java") || relative.endsWith(".md") || relative.endsWith(".gradle") || relative.endsWith(".xml"))) {
+                continue;
+            }
+            String text = Files.readString(target.resolve(relative), StandardCharsets.UTF_8);
+            for (String leak : LEAKS) {
+                if (text.contains(leak)) {
+                    throw new IllegalStateException("the handout's " + relative + " still contains \"" + leak + "\"");
+                }
+            }
+        }
+    }
+
+    /** Zips {@code folder} so that the archive holds one top folder of the same name (ray1/...). */
+    static void zip(Path folder, Path zip) throws IOException {
+        Files.createDirectories(zip.toAbsolutePath().getParent());
+        Path top = folder.getParent();
+        List<Path> files;
+        try (Stream<Path> walk = Files.walk(folder)) {
+            files = walk.filter(Files::isRegularFile).sorted().collect(Collectors.toList());
+        }
+        Path temporary = Files.createTempFile(zip.toAbsolutePath().getParent(), ".handout", ".tmp");
+        try (OutputStream out = Files.newOutputStream(temporary); ZipOutputStream entries = new ZipOutputStream(out)) {
+            for (Path file : files) {
+                entries.putNextEntry(new ZipEntry(top.relativize(file).toString().replace('\\', '/')));
+                Files.copy(file, entries);
+                entries.closeEntry();
+            }
+        }
+        Files.move(temporary, zip, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+    }
+
+    private static void delete(Path path) throws IOException {
+        if (Files.exists(path)) {
+            try (Stream<Path> walk = Files.walk(path)) {
+                for (Path p : (Iterable<Path>) walk.sorted(Comparator.reverseOrder())::iterator) {
+                    Files.delete(p);
+                }
+            }
+        }
+    }
+}
