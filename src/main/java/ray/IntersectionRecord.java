@@ -1,12 +1,12 @@
 package ray;
 
 import ray.math.Vec3;
-import ray.surface.HitGeometry;
 import ray.surface.Surface;
 
 /**
  * What a surface reports about a hit: where along the ray, where in space, the surface's
  * unit outward normal there, which surface was hit and (for triangles) the barycentric coordinates.
+ * Plain data, nothing else: copying these fields copies the hit.
  *
  * <p>A surface's {@code intersect} fills a record only when it reports a hit; on a miss the record
  * is left exactly as it was.
@@ -23,11 +23,7 @@ public final class IntersectionRecord {
     public double beta;
     public double gamma;
 
-    // Framework-owned (a surface's intersect never touches these): see geometry().
-    private HitGeometry geometry;
-    /** The location object that {@link #geometry} describes; a surface reporting a new hit replaces location. */
-    private Vec3 geometryLocation;
-
+    /** Copies every field of {@code other} into this record. */
     public void set(IntersectionRecord other) {
         t = other.t;
         location = other.location;
@@ -35,28 +31,6 @@ public final class IntersectionRecord {
         surface = other.surface;
         beta = other.beta;
         gamma = other.gamma;
-        geometry = other.geometry;
-        geometryLocation = other.geometryLocation;
-    }
-
-    /**
-     * The hit's geometry for starting new rays from it (used by the renderer, not by surfaces):
-     * the one that {@link ray.surface.Transformed} carried out of a transformed group, or else
-     * made now from location and surface, which are then in the coordinates of the caller.
-     * A surface that reports a hit after that replaces location, so a geometry kept from an
-     * earlier, farther hit is never taken for the new one.
-     */
-    public HitGeometry geometry() {
-        if (geometry == null || geometryLocation != location) {
-            setGeometry(HitGeometry.of(this));
-        }
-        return geometry;
-    }
-
-    /** Records {@code g} as the geometry of the hit now in this record (for {@link ray.surface.Transformed}). */
-    public void setGeometry(HitGeometry g) {
-        geometry = g;
-        geometryLocation = location;
     }
 
     @Override

@@ -18,8 +18,6 @@ public final class Ray {
     public final Vec3 direction;
     public double start;
     public double end;
-    /** Made on first use by {@link #frame()}, or by {@link #copy()}; shared with copies, which have the same direction. */
-    private RayFrame frame;
 
     /** A ray from {@code origin} that starts at t = 0 and never ends. */
     public Ray(Vec3 origin, Vec3 direction) {
@@ -40,21 +38,7 @@ public final class Ray {
 
     /** A copy of this ray that its owner can shorten without changing this one. */
     public Ray copy() {
-        Ray copy = new Ray(origin, direction, start, end);
-        // Made here rather than in the copy: a group's copy is its own, so constants made there
-        // would be made again for every group the ray enters (a box is a group of 12 triangles).
-        copy.frame = frame();
-        return copy;
-    }
-
-    /** The constants of this ray's direction that the sphere and triangle tests use (see RayFrame), made on the first call. */
-    public RayFrame frame() {
-        RayFrame f = frame;
-        if (f == null) {
-            f = new RayFrame(direction);
-            frame = f;
-        }
-        return f;
+        return new Ray(origin, direction, start, end);
     }
 
     @Override

@@ -33,7 +33,7 @@ final class FloatSurfaces {
     }
 
     /** The robust sphere test (closest-approach discriminant, stable roots, re-projection) in float. */
-    static final class FloatSphere extends Surface {
+    static final class FloatSphere extends StandIn {
         private final Sphere sphere;
         private final float cx;
         private final float cy;
@@ -41,6 +41,7 @@ final class FloatSurfaces {
         private final float r;
 
         FloatSphere(Sphere sphere) {
+            super(sphere);
             this.sphere = sphere;
             Vec3 c = sphere.getCenter();
             cx = (float) c.x;
@@ -50,7 +51,7 @@ final class FloatSurfaces {
         }
 
         @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
+        protected boolean test(IntersectionRecord out, Ray ray) {
             float dx = (float) ray.direction.x;
             float dy = (float) ray.direction.y;
             float dz = (float) ray.direction.z;
@@ -96,22 +97,17 @@ final class FloatSurfaces {
             out.t = t;
             out.location = rounded(cx + r * nx, cy + r * ny, cz + r * nz);
             out.normal = rounded(nx, ny, nz);
-            out.surface = sphere;
             return true;
-        }
-
-        @Override
-        public Shader getShader() {
-            return sphere.getShader();
         }
     }
 
     /** The watertight triangle test (Woop, Benthin and Wald 2013) in float, without the double fallback for zero edge functions. */
-    static final class FloatTriangle extends Surface {
+    static final class FloatTriangle extends StandIn {
         private final Triangle triangle;
         private final float x0, y0, z0, x1, y1, z1, x2, y2, z2;
 
         FloatTriangle(Triangle triangle) {
+            super(triangle);
             this.triangle = triangle;
             x0 = (float) triangle.getV0().x;
             y0 = (float) triangle.getV0().y;
@@ -125,14 +121,15 @@ final class FloatSurfaces {
         }
 
         @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
+        protected boolean test(IntersectionRecord out, Ray ray) {
             float dx = (float) ray.direction.x, dy = (float) ray.direction.y, dz = (float) ray.direction.z;
             float px = (float) ray.origin.x, py = (float) ray.origin.y, pz = (float) ray.origin.z;
             float a0 = x0 - px, a1 = y0 - py, a2 = z0 - pz;
             float b0 = x1 - px, b1 = y1 - py, b2 = z1 - pz;
             float c0 = x2 - px, c1 = y2 - py, c2 = z2 - pz;
             // The same cyclic renaming of the axes as the double test: the largest |d| component becomes z.
-            int kz = ray.frame().kz;
+            double ux = Math.abs(ray.direction.x), uy = Math.abs(ray.direction.y), uz = Math.abs(ray.direction.z);
+            int kz = ux >= uy && ux >= uz ? 0 : uy >= uz ? 1 : 2;
             float ax, ay, az, bx, by, bz, cx, cy, cz, ex, ey, ez;
             if (kz == 2) {
                 ax = a0; ay = a1; az = a2; bx = b0; by = b1; bz = b2; cx = c0; cy = c1; cz = c2; ex = dx; ey = dy; ez = dz;
@@ -170,15 +167,9 @@ final class FloatSurfaces {
             out.t = t;
             out.location = rounded(px + t * dx, py + t * dy, pz + t * dz);
             out.normal = rounded(n.x, n.y, n.z);
-            out.surface = triangle;
             out.beta = beta;
             out.gamma = gamma;
             return true;
-        }
-
-        @Override
-        public Shader getShader() {
-            return triangle.getShader();
         }
     }
 }

@@ -13,8 +13,8 @@ import ray.surface.Triangle;
 /**
  * Scenes whose spheres or triangles intersect by a textbook method ({@link TextbookSphere},
  * {@link TextbookTriangles}) instead of the solution's, for the figures and the tolerance survey.
- * Each textbook hit names the original primitive as the surface hit, as a student's code does, so
- * the original shader shades it and the framework makes its offsets from the primitive's own numbers.
+ * Each is a {@link StandIn}: the original shader shades its hits and the framework makes their
+ * offsets from the original primitive's own numbers.
  */
 public final class TextbookSurfaces {
     private TextbookSurfaces() {
@@ -58,23 +58,19 @@ public final class TextbookSurfaces {
     }
 
     /** A triangle tested by another method; the hit names the triangle itself, so its shader and offsets apply. */
-    private static final class TriangleBy extends Surface {
+    private static final class TriangleBy extends StandIn {
         private final Triangle triangle;
         private final TextbookTriangles.Method method;
 
         TriangleBy(Triangle triangle, TextbookTriangles.Method method) {
+            super(triangle);
             this.triangle = triangle;
             this.method = method;
         }
 
         @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
+        protected boolean test(IntersectionRecord out, Ray ray) {
             return method.intersect(triangle, out, ray);
-        }
-
-        @Override
-        public Shader getShader() {
-            return triangle.getShader();
         }
     }
 
@@ -83,27 +79,17 @@ public final class TextbookSurfaces {
      * gives them); the hit names the sphere itself, so that its shader applies and the framework makes
      * its offsets from the sphere's own numbers, as it does for a student's code.
      */
-    private static final class TextbookSphereOf extends Surface {
-        private final Sphere sphere;
+    private static final class TextbookSphereOf extends StandIn {
         private final TextbookSphere textbook;
 
         TextbookSphereOf(Sphere sphere) {
-            this.sphere = sphere;
+            super(sphere);
             this.textbook = new TextbookSphere(sphere.getCenter(), sphere.getRadius());
         }
 
         @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
-            if (!textbook.intersect(out, ray)) {
-                return false;
-            }
-            out.surface = sphere;
-            return true;
-        }
-
-        @Override
-        public Shader getShader() {
-            return sphere.getShader();
+        protected boolean test(IntersectionRecord out, Ray ray) {
+            return textbook.intersect(out, ray);
         }
     }
 }

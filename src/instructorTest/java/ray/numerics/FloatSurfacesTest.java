@@ -2,6 +2,7 @@ package ray.numerics;
 
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertSame;
 import static org.junit.Assert.assertTrue;
 import static ray.testing.Asserts.v;
 
@@ -13,6 +14,7 @@ import ray.Ray;
 import ray.accuracy.Sweep;
 import ray.accuracy.Sweeps;
 import ray.math.Vec3;
+import ray.shading.Lambertian;
 import ray.surface.Group;
 import ray.surface.Sphere;
 import ray.surface.Surface;
@@ -28,7 +30,9 @@ public class FloatSurfacesTest {
         assertEquals(4, hit.t, 0);
         assertEquals(v(0, 0, -4), hit.location);
         assertEquals(v(0, 0, 1), hit.normal);
-        assertTrue("the hit names the original sphere", hit.surface == sphere);
+        sphere.setShader(new Lambertian());
+        assertSame("the hit's surface shades as the original sphere", sphere.getShader(), hit.surface.getShader());
+        assertEquals("and measures its hits as the original does", sphere.hitGeometry(hit).toString(), hit.surface.hitGeometry(hit).toString());
     }
 
     @Test
@@ -86,7 +90,7 @@ public class FloatSurfacesTest {
             boolean hitFloat = new FloatSurfaces.FloatTriangle(triangle).intersect(single, ray);
             if (hitDouble && hitFloat) {
                 assertEquals(exact.t, single.t, 1e-6 * exact.t);
-                assertTrue(single.surface == triangle);
+                assertEquals(triangle.toString(), single.surface.toString());
             }
             agreed += hitDouble == hitFloat ? 1 : 0;
         }

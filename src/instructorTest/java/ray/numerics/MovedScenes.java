@@ -15,6 +15,7 @@ import ray.scene.SceneLoader;
 import ray.shading.Light;
 import ray.shading.Tracer;
 import ray.surface.Group;
+import ray.surface.Placement;
 import ray.surface.Surface;
 
 /**
@@ -48,9 +49,7 @@ final class MovedScenes {
         for (Surface surface : original.getSurfaces().children()) {
             placed.addSurface(surface);
         }
-        placed.setScale(new Vec3(scale, scale, scale));
-        placed.setTranslate(translate);
-        moved.addSurface(placed.complete());
+        moved.addSurface(Placement.of(translate, Vec3.ZERO, new Vec3(scale, scale, scale)).place(placed));
         moved.complete();
         return moved;
     }

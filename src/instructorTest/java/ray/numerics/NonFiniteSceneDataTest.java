@@ -31,6 +31,7 @@ import ray.surface.Box;
 import ray.surface.Group;
 import ray.surface.Mesh;
 import ray.surface.MeshData;
+import ray.surface.Placement;
 import ray.surface.Sphere;
 import ray.surface.Surface;
 import ray.surface.Triangle;
@@ -137,8 +138,7 @@ public class NonFiniteSceneDataTest {
     public void groupMovedByAnInfiniteTranslationIsNeverHit() {
         Group group = new Group();
         group.addSurface(new Sphere(v(0, 1, 1.5), 0.3));
-        group.setTranslate(v(INF, 0, 0));
-        assertNeverHit("a group translated by (∞, 0, 0)", group);
+        assertNeverHit("a group translated by (∞, 0, 0)", Placement.of(v(INF, 0, 0), Vec3.ZERO, Vec3.ONE).place(group));
     }
 
     @Test
@@ -184,10 +184,10 @@ public class NonFiniteSceneDataTest {
         hit.location = v(NAN, 0, 0);
         hit.normal = v(0, 1, 0);
         hit.surface = new Sphere(v(0, 0, 0), 1);
-        SecondaryRays.shadowRay(hit, v(0, 5, 0));
-        SecondaryRays.reflectionRay(hit, v(0, 1, 0));
+        SecondaryRays.shadowRay(hit.surface.hitGeometry(hit), v(0, 5, 0));
+        SecondaryRays.reflectionRay(hit.surface.hitGeometry(hit), v(0, 1, 0));
         hit.surface = new Triangle(v(0, 0, 0), v(INF, 0, 0), v(0, 0, 1));
-        SecondaryRays.shadowRay(hit, v(0, 5, 0));
+        SecondaryRays.shadowRay(hit.surface.hitGeometry(hit), v(0, 5, 0));
     }
 
     @Test
@@ -197,9 +197,7 @@ public class NonFiniteSceneDataTest {
         Box box = new Box();
         box.setMinPt(v(NAN, 0, 0));
         assertRefused("is not below maxPt", box::complete);
-        Group scaled = new Group();
-        scaled.setScale(v(NAN, 1, 1));
-        assertRefused("cannot be inverted (its determinant is NaN)", scaled::complete);
+        assertRefused("cannot be inverted (its determinant is NaN)", () -> Placement.of(Vec3.ZERO, Vec3.ZERO, v(NAN, 1, 1)).place(new Group()));
     }
 
     private static void assertRefused(String message, Runnable build) {

@@ -24,6 +24,7 @@ import ray.shading.Lambertian;
 import ray.shading.Light;
 import ray.shading.Tracer;
 import ray.surface.Mesh;
+import ray.surface.Placements;
 import ray.surface.Sphere;
 import ray.surface.Surface;
 import ray.surface.Transformed;
@@ -431,6 +432,7 @@ public final class NumericsFigures {
      * rays leaving hits as {@code spawner} makes them.
      */
     static BufferedImage picture(Scene scene, Surface root, Camera camera, int width, int height, Reintersection.Spawner spawner) {
+        Placements placements = Placements.of(root);
         Tracer tracer = new Tracer() {
             @Override
             public List<Light> lights() {
@@ -439,12 +441,12 @@ public final class NumericsFigures {
 
             @Override
             public boolean unoccluded(IntersectionRecord hit, Vec3 lightPosition) {
-                return !root.intersect(new IntersectionRecord(), spawner.toLight(hit, lightPosition));
+                return !root.intersect(new IntersectionRecord(), spawner.toLight(hit, placements.geometryOf(hit), lightPosition));
             }
 
             @Override
             public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
-                return trace(scene, root, spawner.leaving(hit, direction), depth, this);
+                return trace(scene, root, spawner.leaving(hit, placements.geometryOf(hit), direction), depth, this);
             }
         };
         Image image = new Image(width, height);

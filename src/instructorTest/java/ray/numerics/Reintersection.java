@@ -2,6 +2,7 @@ package ray.numerics;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
@@ -13,6 +14,8 @@ import ray.surface.Group;
 import ray.surface.HitGeometry;
 import ray.surface.Mesh;
 import ray.surface.MeshData;
+import ray.surface.Placement;
+import ray.surface.Placements;
 import ray.surface.Sphere;
 import ray.surface.Surface;
 import ray.surface.Transformed;
@@ -41,21 +44,21 @@ import ray.surface.Triangle;
 final class Reintersection {
     /** How new rays leave a hit: the renderer's way or another, for comparison. */
     interface Spawner {
-        Ray leaving(IntersectionRecord hit, Vec3 direction);
+        Ray leaving(IntersectionRecord hit, HitGeometry g, Vec3 direction);
 
-        Ray toLight(IntersectionRecord hit, Vec3 lightPosition);
+        Ray toLight(IntersectionRecord hit, HitGeometry g, Vec3 lightPosition);
     }
 
     /** The renderer's rays ({@link SecondaryRays}). */
     static final Spawner FRAMEWORK = new Spawner() {
         @Override
-        public Ray leaving(IntersectionRecord hit, Vec3 direction) {
-            return SecondaryRays.reflectionRay(hit, direction);
+        public Ray leaving(IntersectionRecord hit, HitGeometry g, Vec3 direction) {
+            return SecondaryRays.reflectionRay(g, direction);
         }
 
         @Override
-        public Ray toLight(IntersectionRecord hit, Vec3 lightPosition) {
-            return SecondaryRays.shadowRay(hit, lightPosition);
+        public Ray toLight(IntersectionRecord hit, HitGeometry g, Vec3 lightPosition) {
+            return SecondaryRays.shadowRay(g, lightPosition);
         }
 
         @Override
@@ -71,12 +74,12 @@ final class Reintersection {
     static Spawner fixedStart(double epsilon) {
         return new Spawner() {
             @Override
-            public Ray leaving(IntersectionRecord hit, Vec3 direction) {
+            public Ray leaving(IntersectionRecord hit, HitGeometry g, Vec3 direction) {
                 return new Ray(hit.location, direction.normalized(), epsilon, Double.POSITIVE_INFINITY);
             }
 
             @Override
-            public Ray toLight(IntersectionRecord hit, Vec3 lightPosition) {
+            public Ray toLight(IntersectionRecord hit, HitGeometry g, Vec3 lightPosition) {
                 Vec3 toLight = lightPosition.minus(hit.location);
                 double distance = toLight.length();
                 return new Ray(hit.location, toLight.times(1 / distance), epsilon, distance - epsilon);
@@ -100,12 +103,12 @@ final class Reintersection {
         }
 
         @Override
-        public Ray leaving(IntersectionRecord hit, Vec3 direction) {
+        public Ray leaving(IntersectionRecord hit, HitGeometry g, Vec3 direction) {
             return new Ray(origin(hit, direction), direction);
         }
 
         @Override
-        public Ray toLight(IntersectionRecord hit, Vec3 lightPosition) {
+        public Ray toLight(IntersectionRecord hit, HitGeometry g, Vec3 lightPosition) {
             Vec3 origin = origin(hit, lightPosition.minus(hit.location));
             return new Ray(origin, lightPosition.minus(origin), 0, SecondaryRays.SHADOW_END);
         }
@@ -119,20 +122,19 @@ final class Reintersection {
     /** The renderer's rule with {@code ulps} in place of {@link SecondaryRays#OFFSET_ULPS}. */
     static Spawner geometryOffset(double ulps) {
         return new Spawner() {
-            private Vec3 origin(IntersectionRecord hit, Vec3 direction) {
-                HitGeometry g = hit.geometry();
+            private Vec3 origin(HitGeometry g, Vec3 direction) {
                 double offset = ulps * 0x1p-53 * g.scale;
                 return g.point.plusScaled(g.normal.dot(direction) >= 0 ? offset : -offset, g.normal);
             }
 
             @Override
-            public Ray leaving(IntersectionRecord hit, Vec3 direction) {
-                return new Ray(origin(hit, direction), direction);
+            public Ray leaving(IntersectionRecord hit, HitGeometry g, Vec3 direction) {
+                return new Ray(origin(g, direction), direction);
             }
 
             @Override
-            public Ray toLight(IntersectionRecord hit, Vec3 lightPosition) {
-                Vec3 origin = origin(hit, lightPosition.minus(hit.geometry().point));
+            public Ray toLight(IntersectionRecord hit, HitGeometry g, Vec3 lightPosition) {
+                Vec3 origin = origin(g, lightPosition.minus(g.point));
                 return new Ray(origin, lightPosition.minus(origin), 0, SecondaryRays.SHADOW_END);
             }
 
@@ -204,6 +206,7 @@ final class Reintersection {
     private final Spawner spawner;
     private final boolean textbook;
     private final Tally tally = new Tally();
+    private final Map<Surface, Placements> placements = new IdentityHashMap<>();
     /**
      * How far lights stay from the surface: 1e-6 of its size plus 1e-12 of its distance from the
      * origin (about 10^4 ulps there). A light closer than that is on the surface as far as its
@@ -282,10 +285,9 @@ final class Reintersection {
     private Transformed placed(Surface surface, double size, Vec3 position) {
         Group group = new Group();
         group.addSurface(surface);
-        group.setScale(new Vec3(size * (1 + 2 * rng.nextDouble()), size * (1 + 2 * rng.nextDouble()), size * (1 + 2 * rng.nextDouble())));
-        group.setRotate(new Vec3(360 * rng.nextDouble(), 360 * rng.nextDouble(), 360 * rng.nextDouble()));
-        group.setTranslate(position);
-        return (Transformed) group.complete();
+        Vec3 scale = new Vec3(size * (1 + 2 * rng.nextDouble()), size * (1 + 2 * rng.nextDouble()), size * (1 + 2 * rng.nextDouble()));
+        Vec3 rotate = new Vec3(360 * rng.nextDouble(), 360 * rng.nextDouble(), 360 * rng.nextDouble());
+        return (Transformed) Placement.of(position, rotate, scale).place(group);
     }
 
     private void one(Kind kind, int raysPerHit) {
@@ -418,6 +420,11 @@ final class Reintersection {
         return n.times(Math.cos(angle)).plus(tangent.times(Math.sin(angle)));
     }
 
+    /** The renderer's geometry of a hit that {@code surface} reported, as a scene of that surface measures it. */
+    private HitGeometry geometry(Surface surface, IntersectionRecord hit) {
+        return placements.computeIfAbsent(surface, Placements::of).geometryOf(hit);
+    }
+
     private IntersectionRecord primary(Surface surface, Vec3 origin, Vec3 direction) {
         IntersectionRecord hit = new IntersectionRecord();
         if (!surface.intersect(hit, new Ray(origin, direction))) {
@@ -431,10 +438,11 @@ final class Reintersection {
     private void outsideRays(Surface surface, IntersectionRecord hit, Vec3 outward, double size, int raysPerHit) {
         // A textbook sphere's normal (p − c)/r is not unit when its hit point p is off the sphere.
         Vec3 side = outward.normalized();
+        HitGeometry g = geometry(surface, hit);
         IntersectionRecord scratch = new IntersectionRecord();
         for (int k = 0; k < raysPerHit; k++) {
             tally.leaving++;
-            Ray leaving = spawner.leaving(hit, into(side));
+            Ray leaving = spawner.leaving(hit, g, into(side));
             if (surface.intersect(scratch, leaving)) {
                 tally.leavingRehits++;
                 note(hit, leaving, scratch);
@@ -444,7 +452,7 @@ final class Reintersection {
                 continue;
             }
             tally.shadow++;
-            Ray shadow = spawner.toLight(hit, light);
+            Ray shadow = spawner.toLight(hit, g, light);
             if (surface.intersect(scratch, shadow)) {
                 tally.shadowRehits++;
                 note(hit, shadow, scratch);
@@ -476,6 +484,7 @@ final class Reintersection {
 
     /** Shadow rays from a hit on the inside of a closed convex surface to lights inside it, at least {@link #margin} from every wall. */
     private void insideRays(Surface surface, IntersectionRecord hit, Vec3 inward, Chord chord, Depth depth, int raysPerHit) {
+        HitGeometry g = geometry(surface, hit);
         IntersectionRecord scratch = new IntersectionRecord();
         for (int k = 0; k < raysPerHit; k++) {
             Vec3 light = null;
@@ -490,7 +499,7 @@ final class Reintersection {
                 continue;
             }
             tally.shadow++;
-            Ray shadow = spawner.toLight(hit, light);
+            Ray shadow = spawner.toLight(hit, g, light);
             if (surface.intersect(scratch, shadow)) {
                 tally.shadowRehits++;
                 note(hit, shadow, scratch);

@@ -11,6 +11,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.surface.Sphere;
+import ray.surface.SphereShape;
 
 /**
  * NaN or infinite values in the ray (origin, direction, start, end) or the sphere (center, and the
@@ -105,7 +106,7 @@ public class SphereNonFiniteInputTest {
         Sphere sphere = new Sphere();
         sphere.setCenter(center);
         try {
-            Field field = Sphere.class.getDeclaredField("radius");
+            Field field = SphereShape.class.getDeclaredField("radius");
             field.setAccessible(true);
             field.setDouble(sphere, radius);
         } catch (ReflectiveOperationException e) {

@@ -100,10 +100,7 @@ public class BoxIntersectTest {
     @Test
     public void boxRotatedBy90DegreesKeepsExactAxisNormals() {
         // Rz(90): (x,y,z) → (−y,x,z): the box spans x in [−2,2], y in [−1,1] in the world.
-        Group group = new Group();
-        group.setRotate(v(0, 0, 90));
-        group.addSurface(box(MIN, MAX));
-        Surface turned = group.complete();
+        Surface turned = Placement.of(Vec3.ZERO, v(0, 0, 90), Vec3.ONE).place(box(MIN, MAX));
         IntersectionRecord out = new IntersectionRecord();
         assertTrue(turned.intersect(out, new Ray(v(10, 0.3, 0.7), v(-1, 0, 0))));
         assertEquals(8, out.t, TOL);

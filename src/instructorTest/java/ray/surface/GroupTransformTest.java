@@ -23,11 +23,8 @@ public class GroupTransformTest {
 
     private static Surface placed(Vec3 translate, Vec3 rotate, Vec3 scale, Surface child) {
         Group group = new Group();
-        group.setTranslate(translate);
-        group.setRotate(rotate);
-        group.setScale(scale);
         group.addSurface(child);
-        return group.complete();
+        return Placement.of(translate, rotate, scale).place(group);
     }
 
     @Test

@@ -1,8 +1,8 @@
 package ray.render;
 
-import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.surface.HitGeometry;
 
 /**
  * How rays that leave a surface avoid hitting it again at their own origin ("shadow acne"): the
@@ -13,13 +13,13 @@ public enum RayOffsets {
     /** No offset: new rays start at the computed hit point with t &gt; 0. About half re-hit their surface. */
     NONE("none") {
         @Override
-        public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
-            return new Ray(hit.location, lightPosition.minus(hit.location), 0, SecondaryRays.SHADOW_END);
+        public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
+            return new Ray(g.location, lightPosition.minus(g.location), 0, SecondaryRays.SHADOW_END);
         }
 
         @Override
-        public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
-            return new Ray(hit.location, direction);
+        public Ray reflectionRay(HitGeometry g, Vec3 direction) {
+            return new Ray(g.location, direction);
         }
     },
     /**
@@ -30,26 +30,26 @@ public enum RayOffsets {
      */
     FIXED("fixed 1e-6") {
         @Override
-        public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
-            Vec3 d = lightPosition.minus(hit.location);
-            return new Ray(hit.location, d, FIXED_EPSILON / d.length(), SecondaryRays.SHADOW_END);
+        public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
+            Vec3 d = lightPosition.minus(g.location);
+            return new Ray(g.location, d, FIXED_EPSILON / d.length(), SecondaryRays.SHADOW_END);
         }
 
         @Override
-        public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
-            return new Ray(hit.location, direction, FIXED_EPSILON / direction.length(), Double.POSITIVE_INFINITY);
+        public Ray reflectionRay(HitGeometry g, Vec3 direction) {
+            return new Ray(g.location, direction, FIXED_EPSILON / direction.length(), Double.POSITIVE_INFINITY);
         }
     },
     /** The framework's rule ({@link SecondaryRays}): off the re-projected hit along the geometric normal, by a bound scaled to the coordinates. */
     SCALED("scaled") {
         @Override
-        public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
-            return SecondaryRays.shadowRay(hit, lightPosition);
+        public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
+            return SecondaryRays.shadowRay(g, lightPosition);
         }
 
         @Override
-        public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
-            return SecondaryRays.reflectionRay(hit, direction);
+        public Ray reflectionRay(HitGeometry g, Vec3 direction) {
+            return SecondaryRays.reflectionRay(g, direction);
         }
     },
     /**
@@ -60,13 +60,13 @@ public enum RayOffsets {
      */
     SCALED_FOR_FLOAT("scaled for float") {
         @Override
-        public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
-            return SecondaryRays.shadowRay(hit, lightPosition, FLOAT_EPSILON);
+        public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
+            return SecondaryRays.shadowRay(g, lightPosition, FLOAT_EPSILON);
         }
 
         @Override
-        public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
-            return SecondaryRays.reflectionRay(hit, direction, FLOAT_EPSILON);
+        public Ray reflectionRay(HitGeometry g, Vec3 direction) {
+            return SecondaryRays.reflectionRay(g, direction, FLOAT_EPSILON);
         }
     };
 
@@ -83,8 +83,8 @@ public enum RayOffsets {
     }
 
     /** The segment from the hit toward the light that a shadow test traces. */
-    public abstract Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition);
+    public abstract Ray shadowRay(HitGeometry g, Vec3 lightPosition);
 
     /** The ray from the hit in {@code direction} that a reflection traces. */
-    public abstract Ray reflectionRay(IntersectionRecord hit, Vec3 direction);
+    public abstract Ray reflectionRay(HitGeometry g, Vec3 direction);
 }

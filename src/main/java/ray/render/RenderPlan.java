@@ -8,46 +8,19 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import ray.scene.Scene;
-import ray.shading.DirectLighting;
+import ray.shading.Effect;
 import ray.shading.Glazed;
-import ray.shading.Phong;
 import ray.shading.Shader;
 import ray.surface.Group;
 import ray.surface.Surface;
-import ray.surface.Transformed;
-import ray.surface.Triangle;
 
 /**
  * Which effects a render simulates, decided from the scene alone before any ray is traced: a scene
  * pays only for what it uses. The plan walks the surface tree ({@link Surface#children()}) and every
- * reachable shader (a {@link Glazed} shader's substrate too), and counts what each effect needs.
+ * reachable shader (with its {@link Shader#parts()}), and counts the {@link Effect}s each reports.
  * The renderer takes its sample grid and the primitive count for the intersection counter from here.
  */
 public final class RenderPlan {
-
-    /** The effects a scene may call for, in the order they are listed. */
-    public enum Effect {
-        /** Lambertian or Phong shading by point lights: some lit shader and at least one light. */
-        LIGHTING("lighting"),
-        /** One shadow ray per light with a nonzero contribution; same condition as lighting. */
-        SHADOWS("shadows"),
-        /** The Blinn–Phong highlight: some reachable Phong shader (a glaze's substrate counts). */
-        SPECULAR("specular"),
-        /** Mirror rays of Glazed shaders, up to {@link Glazed#MAX_DEPTH} bounces. */
-        REFLECTION("reflection"),
-        /** More than one camera ray per pixel: an n×n grid, n = round(√samples) &gt; 1. */
-        ANTIALIASING("antialiasing"),
-        /** Rays taken into a group's coordinates: some {@link Transformed} in the tree. */
-        TRANSFORMS("transforms"),
-        /** The barycentric blend of a triangle's vertex normals. */
-        VERTEX_NORMALS("vertex normals");
-
-        public final String label;
-
-        Effect(String label) {
-            this.label = label;
-        }
-    }
 
     private final Scene scene;
     private final int gridSide;
@@ -70,24 +43,25 @@ public final class RenderPlan {
         walk.surface(scene.getSurfaces());
         this.primitives = walk.primitives;
         int lights = scene.getLights().size();
-        if (lights > 0 && walk.lit > 0) {
-            running.put(Effect.LIGHTING, count(walk.lit, "shader"));
+        // Lighting and shadows need a light as well as a shader that asks for them.
+        if (lights > 0 && walk.count(Effect.LIGHTING) > 0) {
+            running.put(Effect.LIGHTING, count(walk.count(Effect.LIGHTING), "shader"));
             running.put(Effect.SHADOWS, count(lights, "light"));
         }
-        if (walk.phong > 0) {
-            running.put(Effect.SPECULAR, count(walk.phong, "shader"));
+        if (walk.count(Effect.SPECULAR) > 0) {
+            running.put(Effect.SPECULAR, count(walk.count(Effect.SPECULAR), "shader"));
         }
-        if (walk.glazed > 0) {
-            running.put(Effect.REFLECTION, count(walk.glazed, "shader") + ", depth " + Glazed.MAX_DEPTH);
+        if (walk.count(Effect.REFLECTION) > 0) {
+            running.put(Effect.REFLECTION, count(walk.count(Effect.REFLECTION), "shader") + ", depth " + Glazed.MAX_DEPTH);
         }
         if (gridSide > 1) {
             running.put(Effect.ANTIALIASING, gridSide + "x" + gridSide + (pattern.isJittered() ? " jittered" : ""));
         }
-        if (walk.transforms > 0) {
-            running.put(Effect.TRANSFORMS, count(walk.transforms, "group"));
+        if (walk.count(Effect.TRANSFORMS) > 0) {
+            running.put(Effect.TRANSFORMS, count(walk.count(Effect.TRANSFORMS), "group"));
         }
-        if (walk.smoothTriangles > 0) {
-            running.put(Effect.VERTEX_NORMALS, count(walk.smoothTriangles, "triangle"));
+        if (walk.count(Effect.VERTEX_NORMALS) > 0) {
+            running.put(Effect.VERTEX_NORMALS, count(walk.count(Effect.VERTEX_NORMALS), "triangle"));
         }
     }
 
@@ -207,29 +181,27 @@ public final class RenderPlan {
         return n + " " + noun + (n == 1 ? "" : "s");
     }
 
-    /** One pass over the surface tree, collecting distinct shaders by identity. */
+    /**
+     * One pass over the surface tree: how many surfaces and distinct shaders (by identity, a glaze's
+     * substrate too) call for each effect, and how many primitives there are.
+     */
     private static final class Walk {
         final Set<Shader> shaders = Collections.newSetFromMap(new IdentityHashMap<>());
+        final Map<Effect, Long> counts = new EnumMap<>(Effect.class);
         long primitives;
-        long transforms;
-        long smoothTriangles;
-        int lit;
-        int phong;
-        int glazed;
+
+        long count(Effect effect) {
+            return counts.getOrDefault(effect, 0L);
+        }
 
         void surface(Surface s) {
+            note(s.effects());
             List<Surface> children = s.children();
-            if (s instanceof Transformed) {
-                transforms++;
-            }
             if (children.isEmpty()) {
                 // An empty group tests nothing; every other leaf is one primitive.
                 if (!(s instanceof Group)) {
                     primitives++;
                     shader(s.getShader());
-                }
-                if (s instanceof Triangle && ((Triangle) s).hasVertexNormals()) {
-                    smoothTriangles++;
                 }
                 return;
             }
@@ -242,15 +214,15 @@ public final class RenderPlan {
             if (shader == null || !shaders.add(shader)) {
                 return;
             }
-            if (shader instanceof DirectLighting) {
-                lit++;
+            note(shader.effects());
+            for (Shader part : shader.parts()) {
+                shader(part);
             }
-            if (shader instanceof Phong) {
-                phong++;
-            }
-            if (shader instanceof Glazed) {
-                glazed++;
-                shader(((Glazed) shader).getSubstrate());
+        }
+
+        private void note(Set<Effect> effects) {
+            for (Effect e : effects) {
+                counts.merge(e, 1L, Long::sum);
             }
         }
     }

@@ -28,8 +28,6 @@ public final class Renderer {
     private final RenderPlan plan;
     private final Scene scene;
     private final int threads;
-    /** False only in the test mode that traces every shadow and reflection ray (see {@link #doingAllWork}). */
-    private final boolean skipsZeroWork;
     /** Rows finished so far, for {@link #progress()}: one atomic increment per row, read by whoever shows progress. */
     private final AtomicInteger rowsDone = new AtomicInteger();
     /**
@@ -54,17 +52,12 @@ public final class Renderer {
 
     /** @param threads worker threads, or 0 for one per available core */
     public Renderer(RenderPlan plan, int threads) {
-        this(plan, threads, true);
-    }
-
-    private Renderer(RenderPlan plan, int threads, boolean skipsZeroWork) {
         if (threads < 0) {
             throw new IllegalArgumentException("threads must be ≥ 0 (0 for one per core), got " + threads);
         }
         this.plan = plan;
         this.scene = plan.scene();
         this.threads = threads > 0 ? threads : Runtime.getRuntime().availableProcessors();
-        this.skipsZeroWork = skipsZeroWork;
     }
 
     private static RenderPlan checkedPlan(Scene scene, int samplesPerPixel) {
@@ -72,15 +65,6 @@ public final class Renderer {
             throw new IllegalArgumentException("samples must be ≥ 0 (0 for the scene's own), got " + samplesPerPixel);
         }
         return RenderPlan.of(scene, samplesPerPixel);
-    }
-
-    /**
-     * A renderer for tests that does the work the normal one skips: a shadow ray for every light even
-     * when its contribution is zero, a reflection ray even when the reflectance is zero. Its image
-     * must equal the normal one bit for bit; only its counts differ.
-     */
-    static Renderer doingAllWork(RenderPlan plan, int threads) {
-        return new Renderer(plan, threads, false);
     }
 
     public RenderPlan plan() {
@@ -104,11 +88,11 @@ public final class Renderer {
         int height = plan.window().height;
         Image image = new Image(width, height);
         AtomicInteger nextRow = new AtomicInteger();
-        List<PixelTracer> tracers = new ArrayList<>();
+        List<CountingTracer> tracers = new ArrayList<>();
         List<Runnable> workers = new ArrayList<>();
         int workerCount = Math.min(threads, height);
         for (int k = 0; k < workerCount; k++) {
-            PixelTracer tracer = new PixelTracer(plan, skipsZeroWork);
+            CountingTracer tracer = new CountingTracer(plan);
             tracers.add(tracer);
             workers.add(() -> {
                 try {
@@ -156,7 +140,7 @@ public final class Renderer {
     }
 
     /** Row {@code row} of the window, counted from its bottom, into the image of the window. */
-    private void renderRow(PixelTracer tracer, Image image, int row) {
+    private void renderRow(CountingTracer tracer, Image image, int row) {
         Camera camera = scene.getCamera();
         int width = scene.getWidth();
         int height = scene.getHeight();

@@ -1,6 +1,5 @@
 package ray.render;
 
-import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.surface.HitGeometry;
@@ -49,41 +48,40 @@ public final class SecondaryRays {
     private SecondaryRays() {
     }
 
-    /** How far off the surface rays from {@code hit} start. */
-    public static double offset(IntersectionRecord hit) {
-        return OFFSET_ULPS * EPSILON * hit.geometry().scale;
+    /** How far off the surface rays from a hit with geometry {@code g} start. */
+    public static double offset(HitGeometry g) {
+        return OFFSET_ULPS * EPSILON * g.scale;
     }
 
     /** The hit point pushed off the surface, along its geometric normal, toward the side that {@code direction} points to. */
-    public static Vec3 offsetOrigin(IntersectionRecord hit, Vec3 direction) {
-        return offsetOrigin(hit, direction, EPSILON);
+    public static Vec3 offsetOrigin(HitGeometry g, Vec3 direction) {
+        return offsetOrigin(g, direction, EPSILON);
     }
 
     /**
      * The same with the unit roundoff of another arithmetic: {@code 0x1p-24} for intersection
      * tests that compute in float, whose hit points and tests err by float's ε, not double's.
      */
-    static Vec3 offsetOrigin(IntersectionRecord hit, Vec3 direction, double unitRoundoff) {
-        HitGeometry g = hit.geometry();
+    static Vec3 offsetOrigin(HitGeometry g, Vec3 direction, double unitRoundoff) {
         double offset = OFFSET_ULPS * unitRoundoff * g.scale;
         return g.point.plusScaled(g.normal.dot(direction) >= 0 ? offset : -offset, g.normal);
     }
 
     /** The segment from just off the hit to just short of the light: r(t) for 0 < t < SHADOW_END. */
-    public static Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
-        return shadowRay(hit, lightPosition, EPSILON);
+    public static Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
+        return shadowRay(g, lightPosition, EPSILON);
     }
 
-    static Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition, double unitRoundoff) {
-        Vec3 origin = offsetOrigin(hit, lightPosition.minus(hit.geometry().point), unitRoundoff);
+    static Ray shadowRay(HitGeometry g, Vec3 lightPosition, double unitRoundoff) {
+        Vec3 origin = offsetOrigin(g, lightPosition.minus(g.point), unitRoundoff);
         return new Ray(origin, lightPosition.minus(origin), 0, SHADOW_END);
     }
 
-    public static Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
-        return reflectionRay(hit, direction, EPSILON);
+    public static Ray reflectionRay(HitGeometry g, Vec3 direction) {
+        return reflectionRay(g, direction, EPSILON);
     }
 
-    static Ray reflectionRay(IntersectionRecord hit, Vec3 direction, double unitRoundoff) {
-        return new Ray(offsetOrigin(hit, direction, unitRoundoff), direction);
+    static Ray reflectionRay(HitGeometry g, Vec3 direction, double unitRoundoff) {
+        return new Ray(offsetOrigin(g, direction, unitRoundoff), direction);
     }
 }

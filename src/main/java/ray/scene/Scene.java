@@ -3,12 +3,16 @@ package ray.scene;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import ray.IntersectionRecord;
 import ray.camera.Camera;
 import ray.math.Vec3;
 import ray.shading.Lambertian;
 import ray.shading.Light;
 import ray.shading.Shader;
 import ray.surface.Group;
+import ray.surface.HitGeometry;
+import ray.surface.Placements;
+import ray.surface.ShaderInheritance;
 import ray.surface.Surface;
 
 /** Everything a render needs: camera, image size, lights, surfaces and output settings. */
@@ -23,6 +27,8 @@ public class Scene {
     private final List<Light> lights = new ArrayList<>();
     private final List<Shader> shaders = new ArrayList<>();
     private final Group surfaces = new Group();
+    /** Where the primitives sit, for {@link #hitGeometry}; made when first asked for after the last surface is added. */
+    private volatile Placements placements;
 
     public void setCamera(Camera camera) {
         this.camera = camera;
@@ -71,8 +77,9 @@ public class Scene {
         shaders.add(shader);
     }
 
-    public void addSurface(Surface surface) {
+    public synchronized void addSurface(Surface surface) {
         surfaces.addSurface(surface);
+        placements = null;
     }
 
     /** Checks that the scene can be rendered and gives a white Lambertian to every surface without a shader. */
@@ -84,7 +91,28 @@ public class Scene {
         if (width == 0) {
             throw new IllegalArgumentException("the scene has no <image> size; expected <image>width height</image>");
         }
-        surfaces.inheritShader(new Lambertian());
+        ShaderInheritance.apply(surfaces, new Lambertian());
+    }
+
+    /**
+     * What the renderer needs to start new rays at {@code hit}, a closest hit that
+     * {@code getSurfaces().intersect} reported: see {@link Placements}.
+     */
+    public HitGeometry hitGeometry(IntersectionRecord hit) {
+        return placements().geometryOf(hit);
+    }
+
+    private Placements placements() {
+        Placements made = placements;
+        if (made == null) {
+            synchronized (this) {
+                if (placements == null) {
+                    placements = Placements.of(surfaces);
+                }
+                made = placements;
+            }
+        }
+        return made;
     }
 
     public String getName() {

@@ -18,6 +18,7 @@ import org.w3c.dom.NodeList;
 import ray.camera.Camera;
 import ray.math.Vec3;
 import ray.surface.MeshData;
+import ray.surface.Placement;
 import ray.surface.Surface;
 
 /**
@@ -61,7 +62,7 @@ public final class SceneLoader {
         checkAttributes(root, false);
         Scene scene = new Scene();
         scene.setName(SceneFiles.nameOf(file));
-        setProperties(scene, root);
+        setProperties(scene, null, root);
         try {
             scene.complete();
         } catch (IllegalArgumentException e) {
@@ -70,8 +71,12 @@ public final class SceneLoader {
         return scene;
     }
 
-    /** Applies each child element of {@code element} to {@code target} through its matching setter or adder. */
-    private void setProperties(Object target, Element element) {
+    /**
+     * Applies each child element of {@code element} to {@code target} through its matching setter or
+     * adder; a property that {@code target} has no setter for goes to {@code placement} (a surface's
+     * translate, rotate and scale), when there is one.
+     */
+    private void setProperties(Object target, Placement placement, Element element) {
         for (Node node = element.getFirstChild(); node != null; node = node.getNextSibling()) {
             if (node.getNodeType() == Node.TEXT_NODE && !node.getTextContent().isBlank()) {
                 throw error(node, "unexpected text \"" + excerpt(node.getTextContent().strip())
@@ -81,10 +86,11 @@ public final class SceneLoader {
                 continue;
             }
             Element property = (Element) node;
-            Method setter = findSetter(target.getClass(), property);
+            Method setter = findSetter(target.getClass(), placement != null, property);
+            Object receiver = setter.getDeclaringClass() == Placement.class ? placement : target;
             Object[] args = readArguments(property, setter);
             try {
-                setter.invoke(target, args);
+                setter.invoke(receiver, args);
             } catch (InvocationTargetException e) {
                 Throwable cause = e.getCause();
                 if (cause instanceof SceneException) {
@@ -97,15 +103,19 @@ public final class SceneLoader {
         }
     }
 
-    private Method findSetter(Class<?> type, Element property) {
+    private Method findSetter(Class<?> type, boolean placed, Element property) {
         String name = property.getTagName();
-        for (Method m : type.getMethods()) {
+        List<Method> candidates = new ArrayList<>(List.of(type.getMethods()));
+        if (placed) {
+            candidates.addAll(List.of(Placement.class.getMethods()));
+        }
+        for (Method m : candidates) {
             if (isProperty(m) && propertyName(m).equalsIgnoreCase(name)) {
                 return m;
             }
         }
         TreeSet<String> known = new TreeSet<>();
-        for (Method m : type.getMethods()) {
+        for (Method m : candidates) {
             if (isProperty(m)) {
                 known.add(propertyName(m));
             }
@@ -312,8 +322,9 @@ public final class SceneLoader {
         } catch (ReflectiveOperationException e) {
             throw error(element, "cannot create " + article(type.getSimpleName()) + type.getSimpleName() + " (" + e + ")");
         }
-        setProperties(object, element);
-        object = complete(element, object, baseType);
+        Placement placement = object instanceof Surface ? new Placement() : null;
+        setProperties(object, placement, element);
+        object = complete(element, object, placement);
         String name = element.getAttribute("name");
         if (!name.isEmpty()) {
             Element first = namedAt.putIfAbsent(name, element);
@@ -368,7 +379,7 @@ public final class SceneLoader {
             Class<?> type = Class.forName(qualified, false, SceneLoader.class.getClassLoader());
             if (baseType.isAssignableFrom(type) && !Modifier.isAbstract(type.getModifiers())) {
                 if (!hasPublicConstructorWithoutArguments(type)) {
-                    // Transformed, for one: made by a Group, never written in a scene.
+                    // Transformed, for one: made from a surface's placement, never written in a scene.
                     throw error(element, "type \"" + excerpt(typeName) + "\" cannot be made from a scene file (it has no"
                             + " public constructor without arguments); expected one of "
                             + String.join(", ", KnownTypes.of(baseType)));
@@ -394,10 +405,11 @@ public final class SceneLoader {
         }
     }
 
-    private Object complete(Element element, Object object, Class<?> baseType) {
+    /** Checks and finishes {@code object}; a surface comes back placed where its translate, rotate and scale put it. */
+    private Object complete(Element element, Object object, Placement placement) {
         try {
             if (object instanceof Surface) {
-                return ((Surface) object).complete();
+                return placement.place(((Surface) object).complete());
             }
             if (object instanceof Camera) {
                 ((Camera) object).complete();

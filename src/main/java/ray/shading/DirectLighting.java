@@ -1,5 +1,7 @@
 package ray.shading;
 
+import java.util.EnumSet;
+import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
@@ -14,8 +16,9 @@ public abstract class DirectLighting extends Shader {
     /** The light-independent factor f(n, l, e) that multiplies I/r²; zero means the light cannot add anything. */
     protected abstract Vec3 reflectance(Vec3 normal, Vec3 toLight, Vec3 toEye);
 
-    /** Called once per light after {@link #reflectance} has been evaluated for it; reports the work to the tracer. */
-    protected void evaluated(Tracer tracer) {
+    @Override
+    public Set<Effect> effects() {
+        return EnumSet.of(Effect.LIGHTING, Effect.SHADOWS);
     }
 
     @Override
@@ -26,9 +29,8 @@ public abstract class DirectLighting extends Shader {
             Vec3 toLightVector = light.getPosition().minus(hit.location);
             double distanceSquared = toLightVector.lengthSquared();
             Vec3 f = reflectance(hit.normal, toLightVector.normalized(), toEye);
-            evaluated(tracer);
             // A light whose unshadowed contribution is zero costs no shadow ray.
-            if (f.x == 0 && f.y == 0 && f.z == 0 && tracer.skipsZeroWork() || !tracer.unoccluded(hit, light.getPosition())) {
+            if (f.x == 0 && f.y == 0 && f.z == 0 || !tracer.unoccluded(hit, light.getPosition())) {
                 continue;
             }
             Vec3 intensity = light.getIntensity();

@@ -1,5 +1,8 @@
 package ray.shading;
 
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
@@ -35,6 +38,16 @@ public class Glazed extends Shader {
         return substrate;
     }
 
+    @Override
+    public Set<Effect> effects() {
+        return EnumSet.of(Effect.REFLECTION);
+    }
+
+    @Override
+    public List<Shader> parts() {
+        return List.of(substrate);
+    }
+
     /** Schlick's reflectance for the cosine of the angle between the normal and the eye direction. */
     public double reflectance(double cosTheta) {
         double r0 = (refractiveIndex - 1) / (refractiveIndex + 1);
@@ -49,8 +62,8 @@ public class Glazed extends Shader {
         double cosTheta = hit.normal.dot(toEye);
         double r = reflectance(cosTheta);
         Vec3 base = substrate.shade(hit, ray, tracer, depth).times(1 - r);
-        // At the depth cap the glaze reflects black; a zero reflectance needs no ray (unless the tracer asks for all work).
-        if (depth + 1 > MAX_DEPTH || r == 0 && tracer.skipsZeroWork()) {
+        // At the depth cap the glaze reflects black; a zero reflectance needs no ray.
+        if (depth + 1 > MAX_DEPTH || r == 0) {
             return base;
         }
         // Mirror direction: the eye direction reflected about the normal, 2(n·e)n − e.

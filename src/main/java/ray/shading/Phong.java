@@ -1,5 +1,7 @@
 package ray.shading;
 
+import java.util.EnumSet;
+import java.util.Set;
 import ray.math.Vec3;
 
 /**
@@ -40,8 +42,8 @@ public class Phong extends DirectLighting {
 
     /** Each light's reflectance includes one specular term. */
     @Override
-    protected void evaluated(Tracer tracer) {
-        tracer.specularEvaluated();
+    public Set<Effect> effects() {
+        return EnumSet.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR);
     }
 
     @Override

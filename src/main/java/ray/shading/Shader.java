@@ -1,5 +1,8 @@
 package ray.shading;
 
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
@@ -13,6 +16,26 @@ public abstract class Shader {
      * @return linear RGB radiance toward the ray's origin
      */
     public abstract Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth);
+
+    /** The effects this shader itself calls for (a glaze: reflection; Phong: lighting, shadows, specular). */
+    public Set<Effect> effects() {
+        return Set.of();
+    }
+
+    /** The shaders this one shades with (a glaze's substrate), whose effects it calls for too. */
+    public List<Shader> parts() {
+        return List.of();
+    }
+
+    /** This shader's effects and those of its parts, recursively. */
+    public final Set<Effect> allEffects() {
+        Set<Effect> all = EnumSet.noneOf(Effect.class);
+        all.addAll(effects());
+        for (Shader part : parts()) {
+            all.addAll(part.allEffects());
+        }
+        return all;
+    }
 
     /** Unit vector from the hit toward where the ray came from. */
     protected static Vec3 towardEye(Ray ray) {

@@ -1,12 +1,14 @@
 package ray.surface;
 
+import java.util.ArrayList;
+import java.util.List;
 import ray.math.Vec3;
 
 /**
  * An axis-aligned box from {@code minPt} to {@code maxPt}, made of 12 triangles wound so that
  * each face's geometric normal is its outward axis.
  */
-public class Box extends Group {
+public class Box extends TriangleSet {
     private Vec3 minPt = Vec3.ZERO;
     private Vec3 maxPt = Vec3.ONE;
 
@@ -32,7 +34,7 @@ public class Box extends Group {
             throw new IllegalArgumentException("minPt " + minPt + " is not below maxPt " + maxPt
                     + " on every axis; expected minPt < maxPt in x, y and z");
         }
-        surfaces.clear();
+        List<Triangle> built = new ArrayList<>();
         // Corner k has x from bit 0, y from bit 1, z from bit 2 (0 = min, 1 = max).
         Vec3[] c = new Vec3[8];
         for (int k = 0; k < 8; k++) {
@@ -48,10 +50,11 @@ public class Box extends Group {
             {4, 5, 7, 6}, // +z
         };
         for (int[] f : faces) {
-            addSurface(new Triangle(c[f[0]], c[f[1]], c[f[2]]));
-            addSurface(new Triangle(c[f[0]], c[f[2]], c[f[3]]));
+            built.add(new Triangle(c[f[0]], c[f[1]], c[f[2]]));
+            built.add(new Triangle(c[f[0]], c[f[2]], c[f[3]]));
         }
-        return super.complete();
+        setTriangles(built);
+        return this;
     }
 
     @Override

@@ -1,12 +1,14 @@
 package ray.surface;
 
+import java.util.ArrayList;
+import java.util.List;
 import ray.math.Vec3;
 
 /**
  * A triangle mesh, usually read from an OBJ file. Its triangles share their vertex objects, and
  * use interpolated vertex normals when the file gives them.
  */
-public class Mesh extends Group {
+public class Mesh extends TriangleSet {
     private MeshData data;
 
     public void setData(MeshData data) {
@@ -22,7 +24,7 @@ public class Mesh extends Group {
         if (data == null) {
             throw new IllegalArgumentException("no <data> is given; expected <data> with the path of an OBJ file");
         }
-        surfaces.clear();
+        List<Triangle> built = new ArrayList<>();
         Vec3[] vertices = toVectors(data.positions);
         Vec3[] normals = data.triangleNormals == null ? null : toVectors(data.normals);
         int[] tri = data.triangles;
@@ -30,13 +32,14 @@ public class Mesh extends Group {
             int[] tn = data.triangleNormals;
             // A face without normals (index -1) is flat even in a mesh whose other faces have them.
             if (normals == null || tn[k] < 0) {
-                addSurface(new Triangle(vertices[tri[k]], vertices[tri[k + 1]], vertices[tri[k + 2]]));
+                built.add(new Triangle(vertices[tri[k]], vertices[tri[k + 1]], vertices[tri[k + 2]]));
             } else {
-                addSurface(new Triangle(vertices[tri[k]], vertices[tri[k + 1]], vertices[tri[k + 2]],
+                built.add(new Triangle(vertices[tri[k]], vertices[tri[k + 1]], vertices[tri[k + 2]],
                         normals[tn[k]], normals[tn[k + 1]], normals[tn[k + 2]]));
             }
         }
-        return super.complete();
+        setTriangles(built);
+        return this;
     }
 
     private static Vec3[] toVectors(double[] xyz) {

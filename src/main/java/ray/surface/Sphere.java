@@ -4,10 +4,8 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 
-/** A sphere: the points at distance {@code radius} from {@code center}. */
-public class Sphere extends Surface {
-    private Vec3 center = Vec3.ZERO;
-    private double radius = 1.0;
+/** A sphere: the points at distance {@code radius} from {@code center} (both kept by SphereShape). */
+public class Sphere extends SphereShape {
 
     public Sphere() {
     }
@@ -15,25 +13,6 @@ public class Sphere extends Surface {
     public Sphere(Vec3 center, double radius) {
         setCenter(center);
         setRadius(radius);
-    }
-
-    public Vec3 getCenter() {
-        return center;
-    }
-
-    public void setCenter(Vec3 center) {
-        this.center = center;
-    }
-
-    public double getRadius() {
-        return radius;
-    }
-
-    public void setRadius(double radius) {
-        if (!(radius > 0) || Double.isInfinite(radius)) {
-            throw new IllegalArgumentException("radius is " + radius + "; expected a positive number");
-        }
-        this.radius = radius;
     }
 
     @Override
@@ -49,11 +28,11 @@ public class Sphere extends Surface {
         // The textbook discriminant b² − 4ac cancels catastrophically for small or far spheres.
         // Ray Tracing Gems ch. 7 computes it from the ray's closest-approach vector instead:
         // with f = p − c and d̂ = d/|d|, l = f − (f·d̂)d̂ and Δ/(4a) = r² − l·l.
-        // Most rays miss most spheres, so the miss is decided first, from d̂ (made once per ray).
+        // Most rays miss most spheres, so the miss is decided first, from d̂.
         // A zero, NaN or infinite d puts a NaN in d̂ and so in the discriminant: a miss. A d whose
         // |d|² overflows has d̂ = 0 and is rejected just below.
         Vec3 f = ray.origin.minus(center);
-        Vec3 unitD = ray.frame().unitDirection;
+        Vec3 unitD = ray.direction.times(1 / Math.sqrt(ray.direction.dot(ray.direction)));
         Vec3 l = f.minus(unitD.times(f.dot(unitD)));
         double discriminantOverA = radius * radius - l.dot(l);
         if (!(discriminantOverA >= 0)) {
@@ -92,10 +71,5 @@ public class Sphere extends Surface {
         return true;
         // END SOLUTION
         // STUB: return false;
-    }
-
-    @Override
-    public String toString() {
-        return "Sphere[center " + center + ", radius " + radius + "]";
     }
 }

@@ -1,8 +1,11 @@
 package ray.surface;
 
 import java.util.List;
+import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.math.Affine;
+import ray.shading.Effect;
 import ray.shading.Shader;
 
 /**
@@ -24,6 +27,7 @@ public abstract class Surface {
      */
     public abstract boolean intersect(IntersectionRecord out, Ray ray);
 
+    /** This surface's shader; null until the scene gives it one (a surface without one takes its group's). */
     public Shader getShader() {
         return shader;
     }
@@ -32,18 +36,11 @@ public abstract class Surface {
         this.shader = shader;
     }
 
-    /** Gives this surface {@code inherited} if it has no shader of its own; groups pass it on to their children. */
-    public void inheritShader(Shader inherited) {
-        if (shader == null) {
-            shader = inherited;
-        }
-    }
-
     /**
      * Called once every property is set (by the scene loader, or by code that builds a scene):
      * checks the surface and finishes building it.
      *
-     * @return the surface to place in the scene: this one, or a wrapper around it (a transformed group)
+     * @return this surface
      * @throws IllegalArgumentException when the properties do not describe a valid surface
      */
     public Surface complete() {
@@ -53,6 +50,27 @@ public abstract class Surface {
     /** The surfaces this one is made of (empty for a primitive), for walking the scene tree. */
     public List<Surface> children() {
         return List.of();
+    }
+
+    /** The effects this surface itself calls for (a placed surface: transforms; a smooth triangle: vertex normals). */
+    public Set<Effect> effects() {
+        return Set.of();
+    }
+
+    /** The map from the children's coordinates to this surface's: the identity but for a {@link Transformed}. */
+    public Affine childPlacement() {
+        return Affine.IDENTITY;
+    }
+
+    /**
+     * What the renderer needs to start new rays at a hit on this primitive, made after the closest
+     * hit is found (so {@code intersect} never computes it): see {@link HitGeometry}. A primitive
+     * with more exact knowledge of its own shape (a sphere, a triangle) overrides this.
+     *
+     * @param hit a hit that {@link #intersect} reported on this primitive, in its own coordinates
+     */
+    public HitGeometry hitGeometry(IntersectionRecord hit) {
+        return HitGeometry.atReportedPoint(hit);
     }
 
     @Override

@@ -1,17 +1,18 @@
 package ray.surface;
 
 import java.util.List;
+import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Affine;
+import ray.shading.Effect;
 import ray.shading.Shader;
 
 /**
- * A surface placed by an affine map M. The ray is taken into the surface's own coordinates by
- * M⁻¹; its direction is not renormalized there, so t means the same in both spaces. Hits come
- * back by M, and normals by (M⁻¹)ᵀ (the inverse transpose keeps them perpendicular under
- * non-uniform scale). The hit's {@link HitGeometry} (for new rays) is made in the surface's
- * coordinates and mapped out the same way.
+ * A surface placed by an affine map M (see {@link Placement}). The ray is taken into the surface's
+ * own coordinates by M⁻¹; its direction is not renormalized there, so t means the same in both
+ * spaces. A hit's location comes back by M and its normal by (M⁻¹)ᵀ (the inverse transpose keeps
+ * normals perpendicular under non-uniform scale); its other fields are the same in both spaces.
  */
 public final class Transformed extends Surface {
     private final Surface surface;
@@ -29,19 +30,27 @@ public final class Transformed extends Surface {
     }
 
     @Override
+    public Affine childPlacement() {
+        return toWorld;
+    }
+
+    @Override
+    public Set<Effect> effects() {
+        return Set.of(Effect.TRANSFORMS);
+    }
+
+    @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         Ray local = new Ray(toLocal.applyToPoint(ray.origin), toLocal.applyToVector(ray.direction), ray.start, ray.end);
         if (!surface.intersect(out, local)) {
             return false;
         }
-        // The geometry for new rays is made where the primitive's own numbers are, and carried out.
-        HitGeometry geometry = out.geometry().placedBy(toWorld, toLocal);
         out.location = toWorld.applyToPoint(out.location);
         out.normal = toLocal.applyTransposeToVector(out.normal).normalized();
-        out.setGeometry(geometry);
         return true;
     }
 
+    /** The placed surface's shader: a transform is not a surface of its own. */
     @Override
     public Shader getShader() {
         return surface.getShader();
@@ -50,11 +59,6 @@ public final class Transformed extends Surface {
     @Override
     public void setShader(Shader shader) {
         surface.setShader(shader);
-    }
-
-    @Override
-    public void inheritShader(Shader inherited) {
-        surface.inheritShader(inherited);
     }
 
     @Override

@@ -2,111 +2,25 @@ package ray.surface;
 
 import ray.IntersectionRecord;
 import ray.Ray;
-import ray.RayFrame;
 import ray.math.Vec3;
 
 /**
- * A triangle with vertices v0, v1, v2. Its geometric normal is normalize((v1 − v0) × (v2 − v0));
- * when a mesh gives vertex normals n0, n1, n2, the shading normal is their barycentric blend.
+ * A triangle with vertices v0, v1, v2 (kept, with any vertex normals, by TriangleShape). Its
+ * geometric normal is normalize((v1 − v0) × (v2 − v0)); normalAt(beta, gamma) is the normal to
+ * report, the blend of the vertex normals when a mesh gives them.
  */
-public class Triangle extends Surface {
-    private Vec3 v0 = Vec3.ZERO;
-    private Vec3 v1 = new Vec3(1, 0, 0);
-    private Vec3 v2 = new Vec3(0, 1, 0);
-    /** Vertex normals, or null for a flat triangle. */
-    private Vec3 n0;
-    private Vec3 n1;
-    private Vec3 n2;
-    /**
-     * Whether the vertices span no area (collinear, repeated, or not finite); set by complete().
-     * The face normal itself is not stored: a mesh has millions of triangles and only the hit ones
-     * need it, so it is computed per hit (see {@link #getFaceNormal()}), which saves a Vec3 (40
-     * bytes) per triangle.
-     */
-    private boolean degenerate;
+public class Triangle extends TriangleShape {
 
     public Triangle() {
     }
 
     public Triangle(Vec3 v0, Vec3 v1, Vec3 v2) {
-        this.v0 = v0;
-        this.v1 = v1;
-        this.v2 = v2;
-        complete();
+        super(v0, v1, v2);
     }
 
     /** A triangle whose normal is the barycentric blend of the given vertex normals. */
     public Triangle(Vec3 v0, Vec3 v1, Vec3 v2, Vec3 n0, Vec3 n1, Vec3 n2) {
-        this(v0, v1, v2);
-        this.n0 = n0;
-        this.n1 = n1;
-        this.n2 = n2;
-    }
-
-    public void setV0(Vec3 v0) {
-        this.v0 = v0;
-    }
-
-    public void setV1(Vec3 v1) {
-        this.v1 = v1;
-    }
-
-    public void setV2(Vec3 v2) {
-        this.v2 = v2;
-    }
-
-    public Vec3 getV0() {
-        return v0;
-    }
-
-    public Vec3 getV1() {
-        return v1;
-    }
-
-    public Vec3 getV2() {
-        return v2;
-    }
-
-    public boolean hasVertexNormals() {
-        return n0 != null;
-    }
-
-    /** normalize((v1 − v0) × (v2 − v0)), or the zero vector for a degenerate triangle. */
-    public Vec3 getFaceNormal() {
-        Vec3 cross = edgeCross();
-        return spansArea(cross) ? cross.normalized() : Vec3.ZERO;
-    }
-
-    /** (v1 − v0) × (v2 − v0): the unnormalized face normal, twice the area in length. */
-    private Vec3 edgeCross() {
-        return v1.minus(v0).cross(v2.minus(v0));
-    }
-
-    /** Whether an edge cross product is a usable normal: finite, and not zero or underflowed to zero. */
-    private static boolean spansArea(Vec3 cross) {
-        return cross.isFinite() && cross.lengthSquared() > 0;
-    }
-
-    /**
-     * Computes the face normal. A triangle without area (collinear or repeated vertices, a
-     * non-finite coordinate, or an edge cross product that underflows to zero or overflows) is
-     * degenerate: its face normal is the zero vector (never NaN), and the flag {@code degenerate}
-     * lets intersect reject it at once, since no ray can hit it.
-     */
-    @Override
-    public Surface complete() {
-        degenerate = !spansArea(edgeCross());
-        return this;
-    }
-
-    /** The unit normal at barycentric coordinates (beta, gamma): the face normal, or the blend of vertex normals. */
-    public Vec3 normalAt(double beta, double gamma) {
-        if (n0 == null) {
-            return getFaceNormal();
-        }
-        Vec3 blend = n0.times(1 - beta - gamma).plus(n1.times(beta)).plus(n2.times(gamma)).normalized();
-        // Normals that cancel out, or NaN/infinite inputs, fall back to the face normal (finite by complete()).
-        return blend.isFinite() && blend.lengthSquared() > 0 ? blend : getFaceNormal();
+        super(v0, v1, v2, n0, n1, n2);
     }
 
     @Override
@@ -124,17 +38,16 @@ public class Triangle extends Surface {
         // Not Cramer's rule but the watertight test of Woop, Benthin and Wald, "Watertight
         // Ray/Triangle Intersection", JCGT 2(1), 2013: a ray aimed exactly at an edge or vertex
         // shared by two triangles hits at least one of them, which Cramer's rule does not promise.
-        if (degenerate) {
+        if (isDegenerate()) {
             return false;
         }
         // Name the axes so that the ray's largest direction component is z, by a cyclic shift that
         // keeps the frame right-handed. (The paper also swaps x and y when that component is
         // negative, to keep the winding for back-face culling; this test is two-sided and divides
-        // by det, so a mirror, which negates u, v, w and det together, changes nothing.) The ray
-        // computes its axis and shear once for all the triangles it meets (RayFrame).
+        // by det, so a mirror, which negates u, v, w and det together, changes nothing.)
         Vec3 p = ray.origin;
-        RayFrame frame = ray.frame();
-        int kz = frame.kz;
+        Vec3 d = ray.direction;
+        int kz = Math.abs(d.x) >= Math.abs(d.y) && Math.abs(d.x) >= Math.abs(d.z) ? 0 : Math.abs(d.y) >= Math.abs(d.z) ? 1 : 2;
         // Vertices relative to the ray origin, in the shifted axes (one row per shift).
         double a0 = v0.x - p.x, a1 = v0.y - p.y, a2 = v0.z - p.z;
         double b0 = v1.x - p.x, b1 = v1.y - p.y, b2 = v1.z - p.z;
@@ -149,9 +62,10 @@ public class Triangle extends Surface {
         }
         // Shear the vertices so that the ray becomes the +z axis through the origin. Each vertex's
         // 2D position depends on that vertex and the ray only, so triangles that share it agree.
-        double sz = frame.sz;
-        double sx = frame.sx;
-        double sy = frame.sy;
+        // The renamed (x, y, z) is (x, y, z) for kz = 2, (y, z, x) for kz = 0 and (z, x, y) for kz = 1.
+        double sz = 1 / d.get(kz);
+        double sx = d.get((kz + 1) % 3) * sz;
+        double sy = d.get((kz + 2) % 3) * sz;
         ax -= sx * az;
         ay -= sy * az;
         bx -= sx * bz;
@@ -189,7 +103,7 @@ public class Triangle extends Surface {
         // origin (a rough error bound is 250·2⁻⁵³·m²; in-plane rays measured at most 1.2·2⁻⁵³·m²).
         // Only such a det needs the exact test.
         double m = Math.max(largestMagnitude(a0, a1, a2), Math.max(largestMagnitude(b0, b1, b2), largestMagnitude(c0, c1, c2)));
-        if (Math.abs(det) <= PARALLEL_BOUND * m * m && parallelToPlane(ray.direction)) {
+        if (Math.abs(det) <= PARALLEL_BOUND * m * m && parallelToPlane(d)) {
             return false;
         }
         // The hit's z in the sheared frame (z scaled by sz), interpolated with the unnormalized
@@ -266,9 +180,4 @@ public class Triangle extends Surface {
         return Math.fma(p, q, -rs) + roundingOfRs;
     }
     // END SOLUTION
-
-    @Override
-    public String toString() {
-        return "Triangle[" + v0 + ", " + v1 + ", " + v2 + "]";
-    }
 }

@@ -5,7 +5,6 @@ import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
-import ray.render.SecondaryRays;
 import ray.scene.Scene;
 import ray.shading.DirectLighting;
 import ray.shading.Glazed;
@@ -106,7 +105,7 @@ final class ShadingReport {
         Vec3 lMirror = Vec3.ZERO;
         if (r != 0) {
             Vec3 mirror = hit.normal.times(2 * cosTheta).minus(e);
-            Ray reflection = SecondaryRays.reflectionRay(hit, mirror);
+            Ray reflection = tracer.reflectionRay(hit, mirror);
             out.println(Fmt.row(in, "mirror", "2(n·e)n − e = " + Fmt.vec(mirror)));
             out.println(Fmt.row(in, "reflection", "ray from " + Fmt.vec(reflection.origin) + " (just off the surface)"));
             out.println(Fmt.row(in, "it hits", reflectionHit(reflection)));

@@ -22,7 +22,7 @@ final class ShadowCheck {
     /** Prints the shadow ray and what blocks it; returns whether the renderer sees the light as blocked. */
     static boolean print(Scene scene, SurfaceNames names, IntersectionRecord hit, Vec3 lightPosition, String indent,
             PrintWriter out) {
-        Ray shadowRay = SecondaryRays.shadowRay(hit, lightPosition);
+        Ray shadowRay = SecondaryRays.shadowRay(scene.hitGeometry(hit), lightPosition);
         out.println(Fmt.row(indent, "shadow ray", "from " + Fmt.vec(shadowRay.origin) + " (just off the surface) along "
                 + Fmt.vec(shadowRay.direction) + ", t in (0, 1 − 1e-9)"));
         List<ProbeNode> roots = ProbeTree.of(scene.getSurfaces(), shadowRay);

@@ -16,8 +16,9 @@ public final class CameraRays {
     }
 
     /**
-     * The ray {@code camera.generateRay(u, v)} has exactly this origin and direction (the direction's
-     * length included) and the whole half-line t in (0, ∞).
+     * The ray {@code camera.generateRay(u, v)} is this ray: the same origin (to rounding), a direction
+     * along this one (any positive multiple is the same ray, so normalizing it or not is the
+     * camera's choice) and the whole half-line t in (0, ∞).
      *
      * @param which names the camera in failure messages, e.g. "the default PerspectiveCamera"
      */
@@ -31,7 +32,15 @@ public final class CameraRays {
         String what = which + ", image point (" + u + ", " + v + ")";
         assertNotNull(what + ": generateRay returned null", ray);
         assertVec(what + ": ray origin", origin, ray.origin, tolerance);
-        assertVec(what + ": ray direction", direction, ray.direction, tolerance);
+        assertNotNull(what + ": the ray's direction is null", ray.direction);
+        double length = ray.direction.length();
+        if (!(length > 0) || Double.isInfinite(length)) {
+            throw new AssertionError(what + ": the ray's direction " + ray.direction + " has length " + length
+                    + "; expected a direction along " + direction);
+        }
+        // Compared as unit vectors: d and αd (α > 0) are the same ray.
+        assertVec(what + ": ray direction (compared as a unit vector; expected along " + direction + ", got "
+                + ray.direction + ")", direction.normalized(), ray.direction.times(1 / length), tolerance);
         String segment = what + ": the ray must cover t in (0, ∞); new Ray(origin, direction) does";
         assertEquals(segment + " (ray.start)", 0.0, ray.start, 0);
         assertEquals(segment + " (ray.end)", Double.POSITIVE_INFINITY, ray.end, 0);

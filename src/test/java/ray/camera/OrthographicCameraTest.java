@@ -81,7 +81,7 @@ public class OrthographicCameraTest {
     }
 
     @Test
-    public void directionIsUnitViewDirWhateverItsLength() {
+    public void directionIsAlongViewDirWhateverItsLength() {
         OrthographicCamera camera = new OrthographicCamera();
         camera.setViewDir(v(0, -5, 0));
         camera.setViewUp(v(0, 0, -1));

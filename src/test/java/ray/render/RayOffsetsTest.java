@@ -6,6 +6,7 @@ import static ray.testing.Asserts.v;
 import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.surface.HitGeometry;
 import ray.surface.Sphere;
 
 /**
@@ -14,13 +15,13 @@ import ray.surface.Sphere;
  * is |center| + radius = 1 and the offsets are powers of two.
  */
 public class RayOffsetsTest {
-    private static IntersectionRecord topOfUnitSphere() {
+    private static HitGeometry topOfUnitSphere() {
         IntersectionRecord hit = new IntersectionRecord();
         hit.t = 1;
         hit.location = v(0, 0, 1);
         hit.normal = v(0, 0, 1);
         hit.surface = new Sphere(v(0, 0, 0), 1);
-        return hit;
+        return hit.surface.hitGeometry(hit);
     }
 
     @Test

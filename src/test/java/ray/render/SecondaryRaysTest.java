@@ -8,6 +8,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.surface.HitGeometry;
 import ray.surface.Sphere;
 import ray.surface.Triangle;
 
@@ -18,14 +19,14 @@ import ray.surface.Triangle;
  */
 public class SecondaryRaysTest {
     /** A hit on the triangle (0,0,0), (4,0,0), (0,4,0) at (1, 1, 0) whose shading normal leans toward +x. */
-    private static IntersectionRecord smoothTriangleHit() {
+    private static HitGeometry smoothTriangleHit() {
         Vec3 tilted = v(1, 0, 1).normalized();
         IntersectionRecord hit = new IntersectionRecord();
         hit.t = 1;
         hit.location = v(1, 1, 0);
         hit.normal = tilted;
         hit.surface = new Triangle(v(0, 0, 0), v(4, 0, 0), v(0, 4, 0), tilted, tilted, tilted);
-        return hit;
+        return hit.surface.hitGeometry(hit);
     }
 
     // The triangle's scale is 4 (coordinates) × 2 (thinness), so the offset is 1024 · 2⁻⁵³ · 8 = 2⁻⁴⁰.
@@ -59,7 +60,7 @@ public class SecondaryRaysTest {
         hit.normal = v(0, 0, 1);
         hit.surface = new Sphere(v(0, 0, 0), 2);
         Vec3 light = v(0, 3, 6);
-        Ray shadow = SecondaryRays.shadowRay(hit, light);
+        Ray shadow = SecondaryRays.shadowRay(hit.surface.hitGeometry(hit), light);
         // Scale 0 + 2 = 2: offset 1024 · 2⁻⁵³ · 2 = 2⁻⁴² along +z.
         assertVec(v(0, 0, 2 + 0x1p-42), shadow.origin, 0);
         assertVec(light, shadow.pointAt(1), 1e-15);

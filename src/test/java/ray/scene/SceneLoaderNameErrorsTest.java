@@ -34,7 +34,7 @@ public class SceneLoaderNameErrorsTest {
                 </scene>
                 """);
         SceneFixtures.assertError(e, bad(), 5, 12,
-                "unknown element <radus> in a Sphere (did you mean <radius>?); expected one of center, radius, shader");
+                "unknown element <radus> in a Sphere (did you mean <radius>?); expected one of center, radius, rotate, scale, shader, translate");
     }
 
     @Test

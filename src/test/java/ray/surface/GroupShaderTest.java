@@ -5,10 +5,11 @@ import static org.junit.Assert.assertSame;
 import static ray.testing.Asserts.v;
 
 import org.junit.Test;
+import ray.math.Affine;
 import ray.shading.Lambertian;
 import ray.shading.Shader;
 
-/** Checks shader inheritance: a group's shader reaches children without one, and never replaces a child's own. */
+/** Checks shader inheritance ({@link ShaderInheritance}): a group's shader reaches children without one, and never replaces a child's own. */
 public class GroupShaderTest {
     private final Shader groupShader = new Lambertian(v(1, 0, 0));
     private final Shader childShader = new Lambertian(v(0, 1, 0));
@@ -22,7 +23,7 @@ public class GroupShaderTest {
         group.setShader(groupShader);
         group.addSurface(plain);
         group.addSurface(shaded);
-        group.complete();
+        ShaderInheritance.apply(group, null);
         assertSame(groupShader, plain.getShader());
         assertSame(childShader, shaded.getShader());
     }
@@ -32,11 +33,10 @@ public class GroupShaderTest {
         Sphere grandchild = new Sphere();
         Group middle = new Group();
         middle.addSurface(grandchild);
-        Surface middleCompleted = middle.complete();
         Group top = new Group();
         top.setShader(groupShader);
-        top.addSurface(middleCompleted);
-        top.complete();
+        top.addSurface(middle);
+        ShaderInheritance.apply(top, null);
         assertSame(groupShader, middle.getShader());
         assertSame(groupShader, grandchild.getShader());
     }
@@ -49,8 +49,8 @@ public class GroupShaderTest {
         middle.addSurface(grandchild);
         Group top = new Group();
         top.setShader(groupShader);
-        top.addSurface(middle.complete());
-        top.complete();
+        top.addSurface(middle);
+        ShaderInheritance.apply(top, null);
         assertSame(childShader, middle.getShader());
         assertSame(childShader, grandchild.getShader());
     }
@@ -59,26 +59,25 @@ public class GroupShaderTest {
     public void shaderPassesThroughATransformedGroup() {
         Sphere grandchild = new Sphere();
         Group moved = new Group();
-        moved.setTranslate(v(1, 0, 0));
         moved.addSurface(grandchild);
-        Surface wrapped = moved.complete();
+        Surface wrapped = new Transformed(moved, Affine.translation(v(1, 0, 0)));
         Group top = new Group();
         top.setShader(groupShader);
         top.addSurface(wrapped);
-        top.complete();
+        ShaderInheritance.apply(top, null);
         assertSame(groupShader, grandchild.getShader());
         assertSame(groupShader, wrapped.getShader());
     }
 
     @Test
-    public void groupWithoutShaderLeavesChildrenUntilOneIsInherited() {
+    public void surfacesWithoutAShaderAboveThemTakeTheFallback() {
         Sphere child = new Sphere();
         Group group = new Group();
         group.addSurface(child);
-        group.complete();
+        ShaderInheritance.apply(group, null);
         assertNull(child.getShader());
         // What a scene does for surfaces without a shader: inherit a default from the top.
-        group.inheritShader(groupShader);
+        ShaderInheritance.apply(group, groupShader);
         assertSame(groupShader, child.getShader());
     }
 }

@@ -1,0 +1,94 @@
+package ray.render;
+
+import java.util.List;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+import ray.scene.Scene;
+import ray.shading.Light;
+import ray.shading.Tracer;
+import ray.surface.HitGeometry;
+import ray.surface.Surface;
+
+/**
+ * The renderer's tracing rules, in one place: a ray's radiance is its closest hit (by the scene's
+ * group, the student's loop) shaded by the hit primitive's shader, or the background on a miss;
+ * shadow and reflection rays start off the surface by the plan's {@link RayOffsets}, from the
+ * hit's geometry that the scene measures after the search ({@link Scene#hitGeometry}). The renderer
+ * counts rays with a subclass ({@link CountingTracer}); {@code ray1 trace} uses one to take a
+ * pixel apart. One per thread: it keeps the last hit's geometry, which a shader's several shadow
+ * rays share.
+ */
+public class SceneTracer implements Tracer {
+    private final Scene scene;
+    private final Surface surfaces;
+    private final RayOffsets offsets;
+    /** Scratch record for shadow tests, whose hit is never read. */
+    private final IntersectionRecord shadowHit = new IntersectionRecord();
+    private IntersectionRecord lastHit;
+    private Vec3 lastLocation;
+    private HitGeometry lastGeometry;
+
+    public SceneTracer(Scene scene) {
+        this(scene, RayOffsets.SCALED);
+    }
+
+    public SceneTracer(Scene scene, RayOffsets offsets) {
+        this.scene = scene;
+        this.surfaces = scene.getSurfaces();
+        this.offsets = offsets;
+    }
+
+    public Scene scene() {
+        return scene;
+    }
+
+    /** The radiance that arrives along {@code ray}, a ray of recursion depth {@code depth}. */
+    public Vec3 radiance(Ray ray, int depth) {
+        IntersectionRecord hit = new IntersectionRecord();
+        if (!surfaces.intersect(hit, ray)) {
+            return scene.getBackColor();
+        }
+        return shade(hit, ray, depth);
+    }
+
+    /** Shades a closest hit of {@code ray} with the hit primitive's shader. */
+    protected Vec3 shade(IntersectionRecord hit, Ray ray, int depth) {
+        return hit.surface.getShader().shade(hit, ray, this, depth);
+    }
+
+    @Override
+    public List<Light> lights() {
+        return scene.getLights();
+    }
+
+    @Override
+    public boolean unoccluded(IntersectionRecord hit, Vec3 lightPosition) {
+        return !surfaces.intersect(shadowHit, shadowRay(hit, lightPosition));
+    }
+
+    @Override
+    public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
+        return radiance(reflectionRay(hit, direction), depth);
+    }
+
+    /** The shadow ray that {@link #unoccluded} traces from {@code hit} toward {@code lightPosition}. */
+    public Ray shadowRay(IntersectionRecord hit, Vec3 lightPosition) {
+        return offsets.shadowRay(geometry(hit), lightPosition);
+    }
+
+    /** The reflection ray that {@link #radiance(IntersectionRecord, Vec3, int)} traces. */
+    public Ray reflectionRay(IntersectionRecord hit, Vec3 direction) {
+        return offsets.reflectionRay(geometry(hit), direction);
+    }
+
+    /** The hit's geometry, measured once per hit (a hit's location object changes only with a new hit). */
+    private HitGeometry geometry(IntersectionRecord hit) {
+        if (hit != lastHit || hit.location != lastLocation) {
+            lastGeometry = scene.hitGeometry(hit);
+            lastHit = hit;
+            lastLocation = hit.location;
+        }
+        return lastGeometry;
+    }
+}

@@ -1,0 +1,57 @@
+package ray.surface;
+
+import ray.IntersectionRecord;
+import ray.math.Vec3;
+
+/**
+ * A sphere's data and everything about it but the ray test, which the student's {@link Sphere}
+ * adds: the points at distance {@code radius} from {@code center}.
+ */
+public abstract class SphereShape extends Surface {
+    protected Vec3 center = Vec3.ZERO;
+    protected double radius = 1.0;
+
+    public Vec3 getCenter() {
+        return center;
+    }
+
+    public void setCenter(Vec3 center) {
+        this.center = center;
+    }
+
+    public double getRadius() {
+        return radius;
+    }
+
+    public void setRadius(double radius) {
+        if (!(radius > 0) || Double.isInfinite(radius)) {
+            throw new IllegalArgumentException("radius is " + radius + "; expected a positive number");
+        }
+        this.radius = radius;
+    }
+
+    /**
+     * The hit re-projected to center + radius·(unit direction to the hit), and the coordinates'
+     * scale max|center| + radius. The reported normal is kept as the geometric normal, since shaders
+     * aim new rays by it: it may be more accurate than the direction from the center to the rounded
+     * hit (for a small sphere far from the origin, that direction loses ~1e-7), so only a normal that
+     * is not along the radius at all is replaced.
+     */
+    @Override
+    public HitGeometry hitGeometry(IntersectionRecord hit) {
+        Vec3 p = hit.location;
+        Vec3 reported = hit.normal == null ? Vec3.ZERO : hit.normal.normalized();
+        Vec3 outward = p.minus(center).normalized();
+        if (!(outward.lengthSquared() > 0)) {
+            // A hit reported at the center itself has no direction from it; the reported normal has to do.
+            outward = reported;
+        }
+        Vec3 normal = Math.abs(reported.dot(outward)) > 0.5 ? reported : outward;
+        return new HitGeometry(p, center.plusScaled(radius, outward), normal, center.maxAbs() + radius);
+    }
+
+    @Override
+    public String toString() {
+        return "Sphere[center " + center + ", radius " + radius + "]";
+    }
+}
