@@ -25,7 +25,8 @@ public class Triangle extends TriangleShape {
 
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
-        // TODO(Task 3): intersect the ray with this triangle by Cramer's rule.
+        // TODO(Task 3): intersect the ray with this triangle (any correct method earns the points; the
+        //   lecture's is Cramer's rule, as below).
         //   1) A point of the triangle is v0 + beta·(v1 − v0) + gamma·(v2 − v0). Setting it equal to
         //      p + t·d gives a 3×3 linear system in (beta, gamma, t):
         //        beta·(v0 − v1) + gamma·(v0 − v2) + t·d = v0 − p

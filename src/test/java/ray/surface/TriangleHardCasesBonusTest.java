@@ -42,8 +42,9 @@ public class TriangleHardCasesBonusTest {
      * triangles sharing 162 vertices by index, radius 1), moved to a center at distance 1 from the
      * origin, and 5,000 rays from inside it, each aimed exactly at a vertex (one
      * in four) or at a point of an edge, rounded to double. Every ray must hit some triangle at the
-     * point it was aimed at (t = 1 within 1e-9): a closed mesh has no cracks. Cramer's rule lets
-     * 198 of these 5,000 through (4.3% in TriangleSweep); the solution's watertight test, none.
+     * point it was aimed at (t = 1 within 1e-9): a closed mesh has no cracks. Cramer's rule lets a
+     * few percent of such rays through (4.3% over the instructor's sweep of closed meshes); a
+     * watertight test, none.
      */
     @Test
     public void closedMeshHasNoCracksAtSharedEdgesAndVertices() {

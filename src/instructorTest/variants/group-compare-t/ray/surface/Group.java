@@ -1,0 +1,36 @@
+package ray.surface;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import ray.IntersectionRecord;
+import ray.Ray;
+
+/** No shortened ray: every child is tested on the whole segment and the smallest t kept (ties keep the first). */
+public class Group extends Surface {
+    private final List<Surface> surfaces = new ArrayList<>();
+
+    public void addSurface(Surface surface) {
+        surfaces.add(surface);
+    }
+
+    @Override
+    public List<Surface> children() {
+        return Collections.unmodifiableList(surfaces);
+    }
+
+    @Override
+    public boolean intersect(IntersectionRecord out, Ray ray) {
+        IntersectionRecord closest = null;
+        for (Surface surface : surfaces) {
+            IntersectionRecord candidate = new IntersectionRecord();
+            if (surface.intersect(candidate, ray) && (closest == null || candidate.t < closest.t)) {
+                closest = candidate;
+            }
+        }
+        if (closest != null) {
+            out.set(closest);
+        }
+        return closest != null;
+    }
+}

@@ -1,0 +1,41 @@
+package ray.surface;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+
+/** Known wrong: takes the far root (the back of the sphere) whenever it is in range. */
+public class Sphere extends SphereShape {
+    public Sphere() {
+    }
+
+    public Sphere(Vec3 center, double radius) {
+        setCenter(center);
+        setRadius(radius);
+    }
+
+    @Override
+    public boolean intersect(IntersectionRecord out, Ray ray) {
+        Vec3 d = ray.direction;
+        Vec3 ec = ray.origin.minus(center);
+        double a = d.dot(d);
+        double b = 2 * d.dot(ec);
+        double c = ec.dot(ec) - radius * radius;
+        double disc = b * b - 4 * a * c;
+        if (disc < 0) {
+            return false;
+        }
+        double t = (-b + Math.sqrt(disc)) / (2 * a);
+        if (t <= ray.start || t >= ray.end) {
+            t = (-b - Math.sqrt(disc)) / (2 * a);
+            if (t <= ray.start || t >= ray.end) {
+                return false;
+            }
+        }
+        out.t = t;
+        out.location = ray.pointAt(t);
+        out.normal = out.location.minus(center).times(1 / radius);
+        out.surface = this;
+        return true;
+    }
+}
