@@ -4,7 +4,6 @@ import com.google.gson.Gson;
 import java.io.IOException;
 import java.io.Writer;
 import java.lang.annotation.Annotation;
-import java.lang.reflect.Method;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -32,7 +31,6 @@ import org.junit.runner.notification.RunListener;
  * it also runs the tests without {@code @Points} (as task 0, worth nothing).
  */
 public final class TestRunnerMain {
-    private static final String POINTS = "ray.testing.Points";
     private static final Gson GSON = new Gson();
 
     private final Writer events;
@@ -152,42 +150,19 @@ public final class TestRunnerMain {
 
     /** The test's @Points as task number, task title, points, bonus and visibility; null for ungraded tests. */
     private static Map<String, Object> grading(Description d) {
-        Annotation points = find(d.getAnnotations());
-        if (points == null && d.getTestClass() != null) {
-            points = find(List.of(d.getTestClass().getAnnotations()));
-        }
+        Annotation points = PointsAnnotation.of(d);
         if (points == null) {
             return null;
         }
-        try {
-            Object task = call(points, "task");
-            Map<String, Object> m = new LinkedHashMap<>();
-            m.put("task", task.getClass().getField("number").get(task));
-            m.put("title", task.getClass().getField("title").get(task));
-            m.put("points", call(points, "value"));
-            m.put("bonus", call(points, "bonus"));
-            Object visibility = call(points, "visibility");
-            m.put("visibility", visibility.getClass().getField("gradescope").get(visibility));
-            m.put("class", d.getClassName());
-            m.put("method", d.getMethodName());
-            return m;
-        } catch (ReflectiveOperationException e) {
-            throw new IllegalStateException("cannot read @Points of " + d, e);
-        }
-    }
-
-    private static Annotation find(Iterable<Annotation> annotations) {
-        for (Annotation a : annotations) {
-            if (a.annotationType().getName().equals(POINTS)) {
-                return a;
-            }
-        }
-        return null;
-    }
-
-    private static Object call(Annotation a, String name) throws ReflectiveOperationException {
-        Method m = a.annotationType().getMethod(name);
-        return m.invoke(a);
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("task", PointsAnnotation.field(points, "task", "number"));
+        m.put("title", PointsAnnotation.field(points, "task", "title"));
+        m.put("points", PointsAnnotation.element(points, "value"));
+        m.put("bonus", PointsAnnotation.element(points, "bonus"));
+        m.put("visibility", PointsAnnotation.field(points, "visibility", "gradescope"));
+        m.put("class", d.getClassName());
+        m.put("method", d.getMethodName());
+        return m;
     }
 
     private synchronized void write(Map<String, Object> event) throws IOException {

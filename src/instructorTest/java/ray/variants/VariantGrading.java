@@ -4,7 +4,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
 import java.lang.annotation.Annotation;
-import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
 import java.net.URL;
 import java.nio.charset.StandardCharsets;
@@ -22,16 +21,15 @@ import org.junit.runner.Request;
 import org.junit.runner.manipulation.Filter;
 import org.junit.runner.notification.Failure;
 import org.junit.runner.notification.RunListener;
+import ray.grading.PointsAnnotation;
 
 /**
  * Grades a {@link Variant} in this JVM, as the grader would its task: its files are compiled
  * against the build's classes, every {@code ray.*} class is loaded afresh with them in place
  * ({@link VariantLoader}), and the graded tests chosen by task run through JUnit. Each test's
- * points come from its {@code @Points}, read by name since it is loaded afresh too.
+ * points come from its {@code @Points}, read as the grader reads them ({@link PointsAnnotation}).
  */
 final class VariantGrading {
-    private static final String POINTS = "ray.testing.Points";
-
     /** What one graded test did. */
     static final class Outcome {
         final String test;
@@ -89,7 +87,7 @@ final class VariantGrading {
                         if (!d.isTest()) {
                             return d.getChildren().stream().anyMatch(this::shouldRun);
                         }
-                        Annotation points = points(d);
+                        Annotation points = PointsAnnotation.of(d);
                         return points != null && selection.includes(taskOf(points), d.getClassName());
                     }
 
@@ -151,40 +149,8 @@ final class VariantGrading {
         return names;
     }
 
-    /** The test's @Points (on the method, else on its class), or null for an ungraded test. */
-    static Annotation points(Description d) {
-        Annotation found = find(d.getAnnotations());
-        if (found == null && d.getTestClass() != null) {
-            found = find(List.of(d.getTestClass().getAnnotations()));
-        }
-        return found;
-    }
-
-    private static Annotation find(Iterable<Annotation> annotations) {
-        for (Annotation a : annotations) {
-            if (a.annotationType().getName().equals(POINTS)) {
-                return a;
-            }
-        }
-        return null;
-    }
-
     static int taskOf(Annotation points) {
-        Object task = call(points, "task");
-        try {
-            return task.getClass().getField("number").getInt(task);
-        } catch (ReflectiveOperationException e) {
-            throw new IllegalStateException(e);
-        }
-    }
-
-    static Object call(Annotation a, String name) {
-        try {
-            Method m = a.annotationType().getMethod(name);
-            return m.invoke(a);
-        } catch (ReflectiveOperationException e) {
-            throw new IllegalStateException("cannot read @Points." + name, e);
-        }
+        return (Integer) PointsAnnotation.field(points, "task", "number");
     }
 
     /** Turns JUnit's events into outcomes. */
@@ -213,9 +179,9 @@ final class VariantGrading {
 
         @Override
         public void testFinished(Description d) {
-            Annotation points = points(d);
+            Annotation points = PointsAnnotation.of(d);
             outcomes.add(new Outcome(d.getClassName() + "#" + d.getMethodName(), taskOf(points),
-                    ((Number) call(points, "value")).doubleValue(), (Boolean) call(points, "bonus"), failure));
+                    ((Number) PointsAnnotation.element(points, "value")).doubleValue(), (Boolean) PointsAnnotation.element(points, "bonus"), failure));
         }
     }
 }
