@@ -3,7 +3,6 @@ package ray.numerics;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
-import ray.shading.Shader;
 import ray.surface.Sphere;
 import ray.surface.Surface;
 import ray.surface.Triangle;
@@ -34,7 +33,6 @@ final class FloatSurfaces {
 
     /** The robust sphere test (closest-approach discriminant, stable roots, re-projection) in float. */
     static final class FloatSphere extends StandIn {
-        private final Sphere sphere;
         private final float cx;
         private final float cy;
         private final float cz;
@@ -42,7 +40,6 @@ final class FloatSurfaces {
 
         FloatSphere(Sphere sphere) {
             super(sphere);
-            this.sphere = sphere;
             Vec3 c = sphere.getCenter();
             cx = (float) c.x;
             cy = (float) c.y;

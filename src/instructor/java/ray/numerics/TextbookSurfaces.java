@@ -3,7 +3,6 @@ package ray.numerics;
 import java.util.function.Function;
 import ray.IntersectionRecord;
 import ray.Ray;
-import ray.shading.Shader;
 import ray.surface.Group;
 import ray.surface.Sphere;
 import ray.surface.Surface;

@@ -1,7 +1,6 @@
 package ray.surface;
 
 import ray.IntersectionRecord;
-import ray.math.Affine;
 import ray.math.Vec3;
 
 /**
@@ -24,8 +23,8 @@ import ray.math.Vec3;
  *     ray's test sees this surface, are a few ε·scale (ε = 2⁻⁵³), even where the point itself is
  *     small: a hit near the origin on a ground sphere of radius 10⁶ is computed from numbers near 10⁶.</li>
  * </ul>
- * Made in the primitive's own coordinates and taken out of each transformed group by
- * {@link #placedBy} ({@link Placements} does both).
+ * Made in the primitive's own coordinates and taken out through the transforms that place the
+ * primitive by {@link Placements}.
  */
 public final class HitGeometry {
     /** The thinness factor's cap: triangles up to this thin (angles down to ~1e-6 rad) are measured acne-free. */
@@ -46,12 +45,6 @@ public final class HitGeometry {
     /** The geometry of a hit on a surface that knows nothing more of its shape: the reported point and normal. */
     public static HitGeometry atReportedPoint(IntersectionRecord hit) {
         return new HitGeometry(hit.location, hit.location, hit.normal, hit.location.maxAbs());
-    }
-
-    /** This geometry taken out of a transformed group to its parent's coordinates by {@code toWorld} (with its inverse). */
-    public HitGeometry placedBy(Affine toWorld, Affine toLocal) {
-        return new HitGeometry(toWorld.applyToPoint(location), toWorld.applyToPoint(point),
-                toLocal.applyTransposeToVector(normal).normalized(), toWorld.pointScale(scale));
     }
 
     @Override

@@ -6,13 +6,15 @@ import java.util.List;
 import java.util.Map;
 import ray.IntersectionRecord;
 import ray.math.Affine;
+import ray.math.Vec3;
 
 /**
  * Where each primitive of a surface tree sits: the transforms between the root and it. The renderer
  * asks for a hit's {@link HitGeometry} after the closest hit is found, with the hit as the root
  * reports it; the geometry is made where the primitive's own numbers are, so the hit is taken back
  * into the primitive's coordinates (location by M⁻¹, normal by Mᵀ), measured there by the
- * primitive's {@link Surface#hitGeometry} and taken out again ({@link HitGeometry#placedBy}). A
+ * primitive's {@link Surface#hitGeometry} and taken out again (point by M, normal by (M⁻¹)ᵀ, scale
+ * by {@link Affine#pointScale}). A
  * primitive reached by several paths (a named group reused) takes the path whose re-projected point
  * lies nearest the hit.
  */
@@ -92,9 +94,15 @@ public final class Placements {
             local.normal = local.normal == null ? null : level.toWorld.applyTransposeToVector(local.normal).normalized();
         }
         HitGeometry g = hit.surface.hitGeometry(local);
+        Vec3 point = g.point;
+        Vec3 normal = g.normal;
+        double scale = g.scale;
         for (int i = path.size() - 1; i >= 0; i--) {
-            g = g.placedBy(path.get(i).toWorld, path.get(i).toLocal);
+            Level level = path.get(i);
+            point = level.toWorld.applyToPoint(point);
+            normal = level.toLocal.applyTransposeToVector(normal).normalized();
+            scale = level.toWorld.pointScale(scale);
         }
-        return new HitGeometry(hit.location, g.point, g.normal, g.scale);
+        return new HitGeometry(hit.location, point, normal, scale);
     }
 }

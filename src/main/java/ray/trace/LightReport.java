@@ -45,7 +45,7 @@ final class LightReport {
         if (isZero(unshadowed)) {
             out.println(Fmt.row(in, "shadow", "no shadow ray: this light adds nothing here anyway"));
         } else {
-            blocked = ShadowCheck.print(scene, names, hit, light.getPosition(), in, out);
+            blocked = ShadowCheck.print(scene, names, tracer, hit, light.getPosition(), in, out);
         }
         terms(shader, hit, ray, l, nl, r2, intensity, in);
         Vec3 adds = blocked ? Vec3.ZERO : shader.shade(hit, ray, tracer.onlyLight(light, false), 0);

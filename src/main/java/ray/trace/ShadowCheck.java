@@ -6,7 +6,6 @@ import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
-import ray.render.SecondaryRays;
 import ray.scene.Scene;
 
 /**
@@ -19,10 +18,10 @@ final class ShadowCheck {
     private ShadowCheck() {
     }
 
-    /** Prints the shadow ray and what blocks it; returns whether the renderer sees the light as blocked. */
-    static boolean print(Scene scene, SurfaceNames names, IntersectionRecord hit, Vec3 lightPosition, String indent,
-            PrintWriter out) {
-        Ray shadowRay = SecondaryRays.shadowRay(scene.hitGeometry(hit), lightPosition);
+    /** Prints the shadow ray (the renderer's, from {@code tracer}) and what blocks it; returns whether the renderer sees the light as blocked. */
+    static boolean print(Scene scene, SurfaceNames names, TraceTracer tracer, IntersectionRecord hit, Vec3 lightPosition,
+            String indent, PrintWriter out) {
+        Ray shadowRay = tracer.shadowRay(hit, lightPosition);
         out.println(Fmt.row(indent, "shadow ray", "from " + Fmt.vec(shadowRay.origin) + " (just off the surface) along "
                 + Fmt.vec(shadowRay.direction) + ", t in (0, 1 − 1e-9)"));
         List<ProbeNode> roots = ProbeTree.of(scene.getSurfaces(), shadowRay);
