@@ -5,7 +5,8 @@ import ray.surface.Surface;
 
 /**
  * What a surface reports about a hit: where along the ray, where in space, the surface's
- * unit outward normal there, which surface was hit and (for triangles) the barycentric coordinates.
+ * unit outward normal there, which surface was hit, (for triangles) the barycentric coordinates,
+ * and the texture coordinates of the hit point.
  * Plain data, nothing else: copying these fields copies the hit.
  *
  * <p>A surface's {@code intersect} fills a record only when it reports a hit; on a miss the record
@@ -22,6 +23,12 @@ public final class IntersectionRecord {
     /** Barycentric coordinates of a triangle hit: location = (1 − beta − gamma)·v0 + beta·v1 + gamma·v2. */
     public double beta;
     public double gamma;
+    /**
+     * Texture coordinates (u, v) of the hit, where a texture is looked up: u across the image from
+     * its left edge, v up from its bottom edge, one image per unit (see ray.shading.Texture).
+     */
+    public double texU;
+    public double texV;
 
     /** Copies every field of {@code other} into this record. */
     public void set(IntersectionRecord other) {
@@ -31,6 +38,8 @@ public final class IntersectionRecord {
         surface = other.surface;
         beta = other.beta;
         gamma = other.gamma;
+        texU = other.texU;
+        texV = other.texV;
     }
 
     @Override

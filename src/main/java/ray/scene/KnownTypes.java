@@ -3,6 +3,7 @@ package ray.scene;
 import java.util.List;
 import ray.camera.Camera;
 import ray.shading.Shader;
+import ray.shading.Texture;
 import ray.surface.Surface;
 
 /**
@@ -15,10 +16,13 @@ final class KnownTypes {
 
     static List<String> of(Class<?> base) {
         if (base == Surface.class) {
-            return List.of("Sphere", "Triangle", "Box", "Mesh", "Group");
+            return List.of("Sphere", "Triangle", "Box", "Mesh", "Cylinder", "Group");
         }
         if (base == Shader.class) {
             return List.of("Lambertian", "Phong", "RGBNormals", "Glazed");
+        }
+        if (base == Texture.class) {
+            return List.of("RepeatTexture", "ClampTexture");
         }
         if (base == Camera.class) {
             return List.of("PerspectiveCamera", "OrthographicCamera");

@@ -32,11 +32,14 @@ public final class ObjReader {
     private final DoubleStream.Builder normals = DoubleStream.builder();
     private final IntStream.Builder triangles = IntStream.builder();
     private final IntStream.Builder triangleNormals = IntStream.builder();
+    private final DoubleStream.Builder texCoords = DoubleStream.builder();
+    private final IntStream.Builder triangleTexCoords = IntStream.builder();
     private int vertexCount;
     private int normalCount;
     private int texCoordCount;
     private int triangleCount;
     private boolean anyNormals;
+    private boolean anyTexCoords;
     private int lineNumber;
     private final int maxVertices;
     private final int maxTriangles;
@@ -82,7 +85,8 @@ public final class ObjReader {
             throw error("the mesh has no faces; expected at least one 'f' line");
         }
         return new MeshData(file, positions.build().toArray(), normals.build().toArray(), triangles.build().toArray(),
-                anyNormals ? triangleNormals.build().toArray() : null);
+                anyNormals ? triangleNormals.build().toArray() : null, texCoords.build().toArray(),
+                anyTexCoords ? triangleTexCoords.build().toArray() : null);
     }
 
     /**
@@ -131,6 +135,13 @@ public final class ObjReader {
                 if (words.length < 2) {
                     throw error("'vt' has no coordinates; expected vt u [v [w]]");
                 }
+                checkCount(texCoordCount, maxVertices, "texture coordinates");
+                // v defaults to 0 (the format allows "vt u"); w, for 3D textures, is not used.
+                texCoords.add(parseNumber(words[1], "vt u [v [w]]"));
+                texCoords.add(words.length > 2 ? parseNumber(words[2], "vt u [v [w]]") : 0);
+                if (words.length > 3) {
+                    parseNumber(words[3], "vt u [v [w]]");
+                }
                 texCoordCount++;
                 break;
             case "f":
@@ -175,7 +186,9 @@ public final class ObjReader {
         }
         int[] vertex = new int[corners];
         int[] normal = new int[corners];
+        int[] texCoord = new int[corners];
         boolean faceHasNormals = true;
+        boolean faceHasTexCoords = true;
         for (int i = 0; i < corners; i++) {
             String[] parts = words[i + 1].split("/", -1);
             if (parts.length > 3 || parts[0].isEmpty()) {
@@ -184,7 +197,9 @@ public final class ObjReader {
             }
             vertex[i] = index(parts[0], vertexCount, "vertex");
             if (parts.length >= 2 && !parts[1].isEmpty()) {
-                index(parts[1], texCoordCount, "texture coordinate");
+                texCoord[i] = index(parts[1], texCoordCount, "texture coordinate");
+            } else {
+                faceHasTexCoords = false;
             }
             if (parts.length == 3 && !parts[2].isEmpty()) {
                 normal[i] = index(parts[2], normalCount, "normal");
@@ -193,6 +208,7 @@ public final class ObjReader {
             }
         }
         anyNormals |= faceHasNormals;
+        anyTexCoords |= faceHasTexCoords;
         for (int k = 1; k + 1 < corners; k++) {
             checkCount(triangleCount, maxTriangles, "triangles");
             triangleCount++;
@@ -203,6 +219,10 @@ public final class ObjReader {
             triangleNormals.add(faceHasNormals ? normal[0] : -1);
             triangleNormals.add(faceHasNormals ? normal[k] : -1);
             triangleNormals.add(faceHasNormals ? normal[k + 1] : -1);
+            // Likewise -1 for a corner without texture coordinates: that triangle has (0, 0) everywhere.
+            triangleTexCoords.add(faceHasTexCoords ? texCoord[0] : -1);
+            triangleTexCoords.add(faceHasTexCoords ? texCoord[k] : -1);
+            triangleTexCoords.add(faceHasTexCoords ? texCoord[k + 1] : -1);
         }
     }
 

@@ -9,6 +9,7 @@ import ray.math.Vec3;
 import ray.shading.Lambertian;
 import ray.shading.Light;
 import ray.shading.Shader;
+import ray.shading.Texture;
 import ray.surface.Group;
 import ray.surface.HitGeometry;
 import ray.surface.Placements;
@@ -26,6 +27,7 @@ public class Scene {
     private int samples = 1;
     private final List<Light> lights = new ArrayList<>();
     private final List<Shader> shaders = new ArrayList<>();
+    private final List<Texture> textures = new ArrayList<>();
     private final Group surfaces = new Group();
     /** Where the primitives sit, for {@link #hitGeometry}; made when first asked for after the last surface is added. */
     private volatile Placements placements;
@@ -75,6 +77,11 @@ public class Scene {
     /** A named shader defined at the top level, for surfaces to reuse by ref. */
     public void addShader(Shader shader) {
         shaders.add(shader);
+    }
+
+    /** A named texture defined at the top level, for shaders to reuse by ref. */
+    public void addTexture(Texture texture) {
+        textures.add(texture);
     }
 
     public synchronized void addSurface(Surface surface) {
@@ -149,6 +156,10 @@ public class Scene {
 
     public List<Light> getLights() {
         return Collections.unmodifiableList(lights);
+    }
+
+    public List<Texture> getTextures() {
+        return Collections.unmodifiableList(textures);
     }
 
     public List<Shader> getShaders() {

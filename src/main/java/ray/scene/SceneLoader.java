@@ -16,6 +16,7 @@ import org.w3c.dom.NamedNodeMap;
 import org.w3c.dom.Node;
 import org.w3c.dom.NodeList;
 import ray.camera.Camera;
+import ray.shading.Texture;
 import ray.math.Vec3;
 import ray.surface.MeshData;
 import ray.surface.Placement;
@@ -413,6 +414,9 @@ public final class SceneLoader {
             }
             if (object instanceof Camera) {
                 ((Camera) object).complete();
+            }
+            if (object instanceof Texture) {
+                ((Texture) object).complete();
             }
             return object;
         } catch (IllegalArgumentException e) {

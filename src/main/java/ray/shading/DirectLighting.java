@@ -7,28 +7,62 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /**
- * Shaders lit by point lights: L = Σ over unshadowed lights of I ⊙ f(n, l, e) / r², where l is
+ * Shaders lit by point lights: L = Σ over unshadowed lights of I ⊙ f(kd, n, l, e) / r², where l is
  * the unit vector to the light, r the distance to it and e the unit vector toward the eye.
- * Subclasses give f, the reflectance term.
+ * Subclasses give f, the reflectance term. The diffuse color kd is the shader's {@code diffuseColor},
+ * or, when it has a {@code texture}, the texture's color at the hit, which replaces it.
  */
 public abstract class DirectLighting extends Shader {
+    private Vec3 diffuseColor = Vec3.ONE;
+    private Texture texture;
 
-    /** The light-independent factor f(n, l, e) that multiplies I/r²; zero means the light cannot add anything. */
-    protected abstract Vec3 reflectance(Vec3 normal, Vec3 toLight, Vec3 toEye);
+    public void setDiffuseColor(Vec3 diffuseColor) {
+        this.diffuseColor = diffuseColor;
+    }
+
+    public Vec3 getDiffuseColor() {
+        return diffuseColor;
+    }
+
+    /** A texture whose color at each hit replaces the diffuse color. */
+    public void setTexture(Texture texture) {
+        this.texture = texture;
+    }
+
+    /** The texture, or null. */
+    public Texture getTexture() {
+        return texture;
+    }
+
+    /** kd at a hit: the texture's color there, or the diffuse color when there is no texture. */
+    public Vec3 diffuseColorAt(IntersectionRecord hit) {
+        return texture != null ? texture.colorAt(hit) : diffuseColor;
+    }
+
+    /**
+     * The light-independent factor f(kd, n, l, e) that multiplies I/r², for the diffuse color kd;
+     * zero means the light cannot add anything.
+     */
+    protected abstract Vec3 reflectance(Vec3 kd, Vec3 normal, Vec3 toLight, Vec3 toEye);
 
     @Override
     public Set<Effect> effects() {
-        return EnumSet.of(Effect.LIGHTING, Effect.SHADOWS);
+        Set<Effect> effects = EnumSet.of(Effect.LIGHTING, Effect.SHADOWS);
+        if (texture != null) {
+            effects.add(Effect.TEXTURES);
+        }
+        return effects;
     }
 
     @Override
     public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
         Vec3 toEye = towardEye(ray);
+        Vec3 kd = diffuseColorAt(hit);
         double r = 0, g = 0, b = 0;
         for (Light light : tracer.lights()) {
             Vec3 toLightVector = light.getPosition().minus(hit.location);
             double distanceSquared = toLightVector.lengthSquared();
-            Vec3 f = reflectance(hit.normal, toLightVector.normalized(), toEye);
+            Vec3 f = reflectance(kd, hit.normal, toLightVector.normalized(), toEye);
             // A light whose unshadowed contribution is zero costs no shadow ray.
             if (f.x == 0 && f.y == 0 && f.z == 0 || !tracer.unoccluded(hit, light.getPosition())) {
                 continue;

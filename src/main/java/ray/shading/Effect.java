@@ -12,6 +12,8 @@ public enum Effect {
     SHADOWS("shadows"),
     /** The Blinn–Phong highlight. */
     SPECULAR("specular"),
+    /** A texture lookup per shaded hit, replacing a shader's diffuse color. */
+    TEXTURES("textures"),
     /** Mirror rays of a glaze, up to its depth cap. */
     REFLECTION("reflection"),
     /** More than one camera ray per pixel (asked for by the scene's samples, not by a surface). */

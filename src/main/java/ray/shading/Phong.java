@@ -6,16 +6,12 @@ import ray.math.Vec3;
 
 /**
  * Blinn–Phong: L = Σ (kd ⊙ I · max(0, n·l) + ks ⊙ I · max(0, n·h)^p) / r², with the half vector
- * h = normalize(l + e). As in the course's reference renderer, the specular term is not gated by n·l.
+ * h = normalize(l + e). As in the course's reference renderer, the specular term is not gated by n·l,
+ * and a texture replaces kd only.
  */
 public class Phong extends DirectLighting {
-    private Vec3 diffuseColor = Vec3.ONE;
     private Vec3 specularColor = Vec3.ONE;
     private double exponent = 1.0;
-
-    public void setDiffuseColor(Vec3 diffuseColor) {
-        this.diffuseColor = diffuseColor;
-    }
 
     public void setSpecularColor(Vec3 specularColor) {
         this.specularColor = specularColor;
@@ -26,10 +22,6 @@ public class Phong extends DirectLighting {
             throw new IllegalArgumentException("exponent is " + exponent + "; expected a number ≥ 0");
         }
         this.exponent = exponent;
-    }
-
-    public Vec3 getDiffuseColor() {
-        return diffuseColor;
     }
 
     public Vec3 getSpecularColor() {
@@ -43,14 +35,16 @@ public class Phong extends DirectLighting {
     /** Each light's reflectance includes one specular term. */
     @Override
     public Set<Effect> effects() {
-        return EnumSet.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR);
+        Set<Effect> effects = EnumSet.copyOf(super.effects());
+        effects.add(Effect.SPECULAR);
+        return effects;
     }
 
     @Override
-    protected Vec3 reflectance(Vec3 normal, Vec3 toLight, Vec3 toEye) {
+    protected Vec3 reflectance(Vec3 kd, Vec3 normal, Vec3 toLight, Vec3 toEye) {
         Vec3 half = toLight.plus(toEye).normalized();
         double diffuse = Math.max(0, normal.dot(toLight));
         double specular = Math.pow(Math.max(0, normal.dot(half)), exponent);
-        return diffuseColor.times(diffuse).plus(specularColor.times(specular));
+        return kd.times(diffuse).plus(specularColor.times(specular));
     }
 }

@@ -4,8 +4,9 @@ import java.nio.file.Path;
 
 /**
  * Triangle-mesh data in flat arrays, as a file reader produces it: positions (x, y, z per vertex),
- * optional normals, and three vertex indices per triangle (with three normal indices when the
- * faces carry normals).
+ * optional normals and texture coordinates, and three vertex indices per triangle (with three
+ * normal indices when the faces carry normals, and three texture-coordinate indices when they
+ * carry those).
  */
 public final class MeshData {
     /** The file the mesh was read from, or null for a mesh made in code. */
@@ -15,17 +16,27 @@ public final class MeshData {
     public final int[] triangles;
     /** Normal indices per triangle corner, or null when the faces carry no normals. */
     public final int[] triangleNormals;
+    /** Texture coordinates (u, v per {@code vt} line). */
+    public final double[] texCoords;
+    /**
+     * Texture-coordinate indices per triangle corner (−1 for a corner without one), or null when no
+     * face carries them.
+     */
+    public final int[] triangleTexCoords;
 
     public MeshData(double[] positions, double[] normals, int[] triangles, int[] triangleNormals) {
-        this(null, positions, normals, triangles, triangleNormals);
+        this(null, positions, normals, triangles, triangleNormals, new double[0], null);
     }
 
-    public MeshData(Path source, double[] positions, double[] normals, int[] triangles, int[] triangleNormals) {
+    public MeshData(Path source, double[] positions, double[] normals, int[] triangles, int[] triangleNormals,
+            double[] texCoords, int[] triangleTexCoords) {
         this.source = source;
         this.positions = positions;
         this.normals = normals;
         this.triangles = triangles;
         this.triangleNormals = triangleNormals;
+        this.texCoords = texCoords;
+        this.triangleTexCoords = triangleTexCoords;
     }
 
     public int vertexCount() {

@@ -24,6 +24,9 @@ public class Sphere extends SphereShape {
         //   3) Of the two roots, take the smallest t with ray.start < t < ray.end; none means a miss.
         //   4) On a hit fill out.t, out.location = ray.pointAt(t), out.normal = (location − center)/radius
         //      and out.surface = this, then return true. On a miss, return false and leave out alone.
+        //   5) Also fill the texture coordinates from (x, y, z) = out.normal (unit length, y toward
+        //      the north pole): out.texU = ½ + atan2(x, z)/(2π) (the longitude, 0 to 1 around the
+        //      pole) and out.texV = ½ + asin(y)/π (the latitude, 0 at the south pole, 1 at the north).
         // BEGIN SOLUTION
         // The textbook discriminant b² − 4ac cancels catastrophically for small or far spheres.
         // Ray Tracing Gems ch. 7 computes it from the ray's closest-approach vector instead:
@@ -68,6 +71,10 @@ public class Sphere extends SphereShape {
         out.location = center.plusScaled(radius, outward);
         out.normal = outward;
         out.surface = this;
+        // Longitude and latitude of the unit normal; clamped, since a rounded y may pass ±1 and
+        // asin would give NaN.
+        out.texU = 0.5 + Math.atan2(outward.x, outward.z) / (2 * Math.PI);
+        out.texV = 0.5 + Math.asin(Math.max(-1, Math.min(1, outward.y))) / Math.PI;
         return true;
         // END SOLUTION
         // STUB: return false;

@@ -5,7 +5,8 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /**
- * A triangle with vertices v0, v1, v2 (kept, with any vertex normals, by TriangleShape). Its
+ * A triangle with vertices v0, v1, v2 (kept, with any vertex normals and texture coordinates
+ * vt0, vt1, vt2, by TriangleShape). Its
  * geometric normal is normalize((v1 − v0) × (v2 − v0)); normalAt(beta, gamma) is the normal to
  * report, the blend of the vertex normals when a mesh gives them.
  */
@@ -35,6 +36,8 @@ public class Triangle extends TriangleShape {
         //   3) The ray hits when beta ≥ 0, gamma ≥ 0, beta + gamma ≤ 1 and ray.start < t < ray.end.
         //   4) On a hit fill out.t, out.location, out.normal = normalAt(beta, gamma), out.surface = this,
         //      out.beta and out.gamma, then return true. On a miss, return false and leave out alone.
+        //   5) Also fill the texture coordinates, blended like the location: with
+        //      vt = (1 − beta − gamma)·vt0 + beta·vt1 + gamma·vt2, out.texU = vt.x and out.texV = vt.y.
         // BEGIN SOLUTION
         // Not Cramer's rule but the watertight test of Woop, Benthin and Wald, "Watertight
         // Ray/Triangle Intersection", JCGT 2(1), 2013: a ray aimed exactly at an edge or vertex
@@ -134,6 +137,9 @@ public class Triangle extends TriangleShape {
         out.surface = this;
         out.beta = beta;
         out.gamma = gamma;
+        double alpha = 1 - beta - gamma;
+        out.texU = alpha * vt0.x + beta * vt1.x + gamma * vt2.x;
+        out.texV = alpha * vt0.y + beta * vt1.y + gamma * vt2.y;
     }
 
     /** 512·2⁻⁵³: see the parallel test in intersect. */

@@ -7,13 +7,18 @@ import ray.shading.Effect;
 
 /**
  * A triangle's data and everything about it but the ray test, which the student's {@link Triangle}
- * adds: vertices v0, v1, v2, and optional vertex normals n0, n1, n2 whose barycentric blend is then
- * the shading normal.
+ * adds: vertices v0, v1, v2, optional vertex normals n0, n1, n2 whose barycentric blend is then
+ * the shading normal, and texture coordinates vt0, vt1, vt2 (u, v in x and y; all zero unless a
+ * mesh's {@code vt} lines or the scene give them).
  */
 public abstract class TriangleShape extends Surface {
     protected Vec3 v0 = Vec3.ZERO;
     protected Vec3 v1 = new Vec3(1, 0, 0);
     protected Vec3 v2 = new Vec3(0, 1, 0);
+    /** The vertices' texture coordinates: (u, v, w) as an OBJ file's {@code vt} gives them, w unused. */
+    protected Vec3 vt0 = Vec3.ZERO;
+    protected Vec3 vt1 = Vec3.ZERO;
+    protected Vec3 vt2 = Vec3.ZERO;
     /** Vertex normals, or null for a flat triangle. */
     private Vec3 n0;
     private Vec3 n1;
@@ -53,6 +58,30 @@ public abstract class TriangleShape extends Surface {
 
     public void setV2(Vec3 v2) {
         this.v2 = v2;
+    }
+
+    public void setVt0(Vec3 vt0) {
+        this.vt0 = vt0;
+    }
+
+    public void setVt1(Vec3 vt1) {
+        this.vt1 = vt1;
+    }
+
+    public void setVt2(Vec3 vt2) {
+        this.vt2 = vt2;
+    }
+
+    public Vec3 getVt0() {
+        return vt0;
+    }
+
+    public Vec3 getVt1() {
+        return vt1;
+    }
+
+    public Vec3 getVt2() {
+        return vt2;
     }
 
     public Vec3 getV0() {

@@ -77,7 +77,7 @@ final class PrimitiveProbe {
     private static List<String> missProblems(IntersectionRecord r) {
         List<String> problems = new ArrayList<>();
         boolean untouched = r.t == Double.POSITIVE_INFINITY && r.location == null && r.normal == null
-                && r.surface == null && r.beta == 0 && r.gamma == 0;
+                && r.surface == null && r.beta == 0 && r.gamma == 0 && r.texU == 0 && r.texV == 0;
         if (!untouched) {
             problems.add("returned false but changed the record: a miss must leave it untouched, or a group's"
                     + " closest hit gets overwritten");

@@ -11,7 +11,7 @@ public final class Records {
     private Records() {
     }
 
-    /** A record holding recognizable values (t = 123, location (7,7,7), β = 0.25, γ = 0.5). */
+    /** A record holding recognizable values (t = 123, location (7,7,7), β = 0.25, γ = 0.5, texture coordinates (0.125, 0.375)). */
     public static IntersectionRecord sentinel(Surface surface) {
         IntersectionRecord out = new IntersectionRecord();
         out.t = 123;
@@ -20,6 +20,8 @@ public final class Records {
         out.surface = surface;
         out.beta = 0.25;
         out.gamma = 0.5;
+        out.texU = 0.125;
+        out.texV = 0.375;
         return out;
     }
 
@@ -32,6 +34,8 @@ public final class Records {
         assertSame(rule + "out.surface", expected.surface, actual.surface);
         assertEquals(rule + "out.beta", expected.beta, actual.beta, 0);
         assertEquals(rule + "out.gamma", expected.gamma, actual.gamma, 0);
+        assertEquals(rule + "out.texU", expected.texU, actual.texU, 0);
+        assertEquals(rule + "out.texV", expected.texV, actual.texV, 0);
     }
 
     public static IntersectionRecord copyOf(IntersectionRecord record) {

@@ -8,7 +8,10 @@ public enum StudentTask {
     CAMERA(1, "Camera rays", "src/main/java/ray/camera/PerspectiveCamera.java", "src/main/java/ray/camera/OrthographicCamera.java"),
     SPHERE(2, "Sphere", "src/main/java/ray/surface/Sphere.java"),
     TRIANGLE(3, "Triangle", "src/main/java/ray/surface/Triangle.java"),
-    GROUP(4, "Group", "src/main/java/ray/surface/Group.java");
+    GROUP(4, "Group", "src/main/java/ray/surface/Group.java"),
+    TEXTURE(5, "Textures", "src/main/java/ray/shading/RepeatTexture.java", "src/main/java/ray/shading/ClampTexture.java"),
+    /** Extra credit: every test of it is a bonus test. */
+    CYLINDER(6, "Cylinder", "src/main/java/ray/surface/Cylinder.java");
 
     public final int number;
     public final String title;
