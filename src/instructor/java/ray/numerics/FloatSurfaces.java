@@ -94,6 +94,7 @@ final class FloatSurfaces {
             out.t = t;
             out.location = rounded(cx + r * nx, cy + r * ny, cz + r * nz);
             out.normal = rounded(nx, ny, nz);
+            StandInTexCoords.sphere(out, out.normal);
             return true;
         }
     }
@@ -166,6 +167,7 @@ final class FloatSurfaces {
             out.normal = rounded(n.x, n.y, n.z);
             out.beta = beta;
             out.gamma = gamma;
+            StandInTexCoords.triangle(out, triangle, beta, gamma);
             return true;
         }
     }

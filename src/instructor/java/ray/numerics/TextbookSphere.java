@@ -48,6 +48,7 @@ final class TextbookSphere extends Surface {
         out.location = ray.pointAt(t);
         out.normal = out.location.minus(center).times(1 / radius);
         out.surface = this;
+        StandInTexCoords.sphere(out, out.normal);
         return true;
     }
 }

@@ -103,6 +103,7 @@ public final class TextbookTriangles {
         out.surface = triangle;
         out.beta = beta;
         out.gamma = gamma;
+        StandInTexCoords.triangle(out, triangle, beta, gamma);
         return true;
     }
 }
