@@ -59,7 +59,7 @@ public class RenderPlanTest {
         assertFalse(plan.runs(Effect.LIGHTING));
         assertFalse(plan.runs(Effect.SHADOWS));
         assertEquals(List.of(), plan.effects());
-        assertEquals("effects: none; skipped: lighting, shadows, specular, reflection, antialiasing, transforms, vertex normals",
+        assertEquals("effects: none; skipped: lighting, shadows, specular, textures, reflection, antialiasing, transforms, vertex normals",
                 plan.describe());
     }
 
@@ -184,7 +184,7 @@ public class RenderPlanTest {
         scene.addSurface(sphere(new Phong()));
         scene.complete();
         assertEquals("effects: lighting(1 shader) shadows(2 lights) specular(1 shader);"
-                + " skipped: reflection, antialiasing, transforms, vertex normals", RenderPlan.of(scene).describe());
-        assertEquals(List.of("reflection", "antialiasing", "transforms", "vertex normals"), RenderPlan.of(scene).skipped());
+                + " skipped: textures, reflection, antialiasing, transforms, vertex normals", RenderPlan.of(scene).describe());
+        assertEquals(List.of("textures", "reflection", "antialiasing", "transforms", "vertex normals"), RenderPlan.of(scene).skipped());
     }
 }

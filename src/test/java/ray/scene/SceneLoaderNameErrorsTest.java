@@ -16,7 +16,7 @@ import org.junit.rules.TemporaryFolder;
  * its {@code >}; each element sits on its own line so that the line is unambiguous.
  */
 public class SceneLoaderNameErrorsTest {
-    private static final String SURFACE_TYPES = "Sphere, Triangle, Box, Mesh, Group";
+    private static final String SURFACE_TYPES = "Sphere, Triangle, Box, Mesh, Cylinder, Group";
     private static final String SHADER_TYPES = "Lambertian, Phong, RGBNormals, Glazed";
 
     @Rule
@@ -47,7 +47,7 @@ public class SceneLoaderNameErrorsTest {
                 </scene>
                 """);
         SceneFixtures.assertError(e, bad(), 4, 12, "unknown element <sphere> in <scene>;"
-                + " expected one of backColor, camera, exposure, image, light, samples, shader, surface");
+                + " expected one of backColor, camera, exposure, image, light, samples, shader, surface, texture");
     }
 
     @Test
