@@ -40,7 +40,7 @@ public class RenderCommandTest {
 
     /** The plan line of the floor scene (one white Lambertian triangle, one light), at 1 sample. */
     private static final String FLOOR_PLAN = "effects: lighting(1 shader) shadows(1 light);"
-            + " skipped: specular, reflection, antialiasing, transforms, vertex normals";
+            + " skipped: specular, textures, reflection, antialiasing, transforms, vertex normals";
 
     @Test
     public void renderingOneSceneWritesItsPngAndOneSummaryLine() throws Exception {

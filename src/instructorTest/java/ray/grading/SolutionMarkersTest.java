@@ -59,7 +59,10 @@ public class SolutionMarkersTest {
                 "src/main/java/ray/camera/PerspectiveCamera.java", 1,
                 "src/main/java/ray/surface/Sphere.java", 2,
                 "src/main/java/ray/surface/Triangle.java", 3,
-                "src/main/java/ray/surface/Group.java", 4), files);
+                "src/main/java/ray/surface/Group.java", 4,
+                "src/main/java/ray/shading/RepeatTexture.java", 5,
+                "src/main/java/ray/shading/ClampTexture.java", 5,
+                "src/main/java/ray/surface/Cylinder.java", 6), files);
         for (String file : files.keySet()) {
             String student = SolutionMarkers.studentVersion(java.nio.file.Files.readString(java.nio.file.Path.of(file)), file);
             assertTrue(file, !student.contains("SOLUTION") && !student.contains("// STUB:"));
