@@ -1,0 +1,76 @@
+package ray.surface;
+
+import ray.IntersectionRecord;
+import ray.math.Vec3;
+
+/**
+ * A capped cylinder's data and everything about it but the ray test, which the student's
+ * {@link Cylinder} adds (extra credit): the solid whose bottom cap is the disc of {@code radius}
+ * about {@code center} in the plane y = center.y, rising along +y by {@code height}. Any other
+ * orientation is a {@code <rotate>} away, as for every surface.
+ */
+public abstract class CylinderShape extends Surface {
+    protected Vec3 center = Vec3.ZERO;
+    protected double radius = 1.0;
+    protected double height = 1.0;
+
+    public Vec3 getCenter() {
+        return center;
+    }
+
+    public void setCenter(Vec3 center) {
+        this.center = center;
+    }
+
+    public double getRadius() {
+        return radius;
+    }
+
+    public void setRadius(double radius) {
+        this.radius = positive("radius", radius);
+    }
+
+    public double getHeight() {
+        return height;
+    }
+
+    public void setHeight(double height) {
+        this.height = positive("height", height);
+    }
+
+    private static double positive(String name, double value) {
+        if (!(value > 0) || Double.isInfinite(value)) {
+            throw new IllegalArgumentException(name + " is " + value + "; expected a positive number");
+        }
+        return value;
+    }
+
+    /**
+     * The hit put back on the part of the surface its normal names: onto the side at distance
+     * {@code radius} from the axis, or into a cap's plane, as the sphere's hit is re-projected
+     * (Ray Tracing Gems ch. 6), so that new rays start on the surface to the rounding of its own
+     * numbers. The scale is that of the numbers the point is computed from: the center, the
+     * radius and the height.
+     */
+    @Override
+    public HitGeometry hitGeometry(IntersectionRecord hit) {
+        Vec3 p = hit.location;
+        Vec3 normal = hit.normal == null ? Vec3.ZERO : hit.normal.normalized();
+        double scale = center.maxAbs() + radius + height;
+        if (Math.abs(normal.y) > 0.5) {
+            double capY = normal.y > 0 ? center.y + height : center.y;
+            return new HitGeometry(p, new Vec3(p.x, capY, p.z), normal, scale);
+        }
+        Vec3 radial = new Vec3(p.x - center.x, 0, p.z - center.z).normalized();
+        if (!(radial.lengthSquared() > 0)) {
+            return new HitGeometry(p, p, normal, scale); // on the axis: no direction to re-project along
+        }
+        Vec3 point = new Vec3(center.x + radius * radial.x, p.y, center.z + radius * radial.z);
+        return new HitGeometry(p, point, normal, scale);
+    }
+
+    @Override
+    public String toString() {
+        return "Cylinder[center " + center + ", radius " + radius + ", height " + height + "]";
+    }
+}
