@@ -46,6 +46,8 @@ final class RenderScenes {
         tasks.put("wire-box", StudentTask.GROUP);
         tasks.put("group-transforms", StudentTask.GROUP);
         tasks.put("glazed-sphere", StudentTask.GROUP);
+        // Task 6 (extra credit): capped cylinders, upright and placed by a group.
+        tasks.put("cylinder", StudentTask.CYLINDER);
         // The numerically hard cases (scenes/hard, docs/numerics.md), each under the task whose code it strains most.
         tasks.put("far-tiny-sphere", StudentTask.SPHERE);
         tasks.put("huge-ground-sphere", StudentTask.SPHERE);
