@@ -68,6 +68,27 @@ public class AlternativeSolutionsTest {
                 Variant.correct("group-compare-t", 4), Variant.correct("group-index-loop", 4));
     }
 
+    /**
+     * The cylinder is extra credit, so all its tests are bonus tests: a correct cylinder must pass
+     * every one of them (the regular-points rule above would hold vacuously), and a wrong one must
+     * fail some.
+     */
+    @Test
+    public void cylindersWrittenAnyCorrectWayEarnEveryBonusPoint() throws Exception {
+        StringBuilder unfair = new StringBuilder();
+        for (Variant variant : List.of(Variant.correct("cylinder-textbook", 6), Variant.correct("cylinder-unit-direction", 6))) {
+            List<VariantGrading.Outcome> outcomes = VariantGrading.run(variant, (task, type) -> task == variant.task, work);
+            assertTrue(variant + " ran no test of its task", !outcomes.isEmpty());
+            summarize(variant, outcomes);
+            outcomes.stream().filter(o -> !o.passed()).forEach(o -> unfair.append("\n  ").append(variant).append(": ").append(o));
+        }
+        assertTrue("a correct cylinder failed extra-credit tests:" + unfair, unfair.length() == 0);
+        Variant wrong = Variant.wrong("cylinder-infinite-side", 6);
+        List<VariantGrading.Outcome> outcomes = VariantGrading.run(wrong, (task, type) -> task == wrong.task, work);
+        summarize(wrong, outcomes);
+        assertTrue(wrong + " must fail some of its extra-credit tests", outcomes.stream().anyMatch(o -> !o.passed()));
+    }
+
     @Test
     public void knownMistakesLosePointsInTheirOwnTask() throws Exception {
         for (Variant wrong : List.of(Variant.wrong("camera-flipped-v", 1), Variant.wrong("camera-uncentered", 1),
