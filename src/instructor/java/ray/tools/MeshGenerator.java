@@ -25,6 +25,8 @@ import ray.surface.MeshData;
  *     (relative) indices {@code f -4 -3 -2 -1}.</li>
  * <li>{@code icosphere-room.obj}: a closed mesh to be seen from inside (scenes/hard), an icosahedron
  *     subdivided twice, wound inward.</li>
+ * <li>{@code tablecloth.obj}: a square of two triangles, {@code f v/vt} faces, whose texture
+ *     coordinates run from 0 to 4, so a repeating texture tiles it 4 × 4 times (scenes/textured).</li>
  * </ul>
  *
  * <p>Every face is wound counter-clockwise seen from outside, so the geometric normal
@@ -48,6 +50,7 @@ public final class MeshGenerator {
         writeVase(folder.resolve("vase.obj"));
         writeChecker(folder.resolve("checker.obj"));
         writeIcosphereRoom(folder.resolve("icosphere-room.obj"));
+        writeTablecloth(folder.resolve("tablecloth.obj"));
     }
 
     // Torus: major radius R (center of the tube to the y axis), minor radius r (the tube), lying in
@@ -235,6 +238,29 @@ public final class MeshGenerator {
                 // Reversed (a, c, b): clockwise seen from outside, counter-clockwise from the center.
                 out.println("f " + (faces[f] + 1) + " " + (faces[f + 2] + 1) + " " + (faces[f + 1] + 1));
             }
+        }
+    }
+
+    // Tablecloth: the square [−1, 1]² in the plane y = 0 with texture coordinates u = 2(x + 1) and
+    // v = 2(1 − z), 0 to 4: u grows toward +x and v away from a camera on the +z side, so a texture
+    // appears upright, unmirrored, seen from there. Corners (−1, 1), (1, 1), (1, −1), (−1, −1) turn
+    // counter-clockwise seen from above: the normal is +y.
+    private static final double TABLECLOTH_REPEATS = 4;
+
+    private static void writeTablecloth(Path file) throws IOException {
+        try (PrintWriter out = open(file)) {
+            header(out, file, String.format("the square [-1, 1]^2 in y = 0 (2 triangles), texture coordinates 0 to %s,"
+                    + " f v/vt faces", num(TABLECLOTH_REPEATS)));
+            double[][] corners = {{-1, 1}, {1, 1}, {1, -1}, {-1, -1}};
+            for (double[] c : corners) {
+                vertex(out, "v", c[0], 0, c[1]);
+            }
+            for (double[] c : corners) {
+                double u = TABLECLOTH_REPEATS * (c[0] + 1) / 2;
+                double v = TABLECLOTH_REPEATS * (1 - c[1]) / 2;
+                out.println("vt " + num(u) + " " + num(v));
+            }
+            out.println("f 1/1 2/2 3/3 4/4");
         }
     }
 
