@@ -46,6 +46,13 @@ final class RenderScenes {
         tasks.put("wire-box", StudentTask.GROUP);
         tasks.put("group-transforms", StudentTask.GROUP);
         tasks.put("glazed-sphere", StudentTask.GROUP);
+        // Textured scenes (scenes/textured), each under the task whose mistakes it shows most plainly:
+        // the globe's marks show the sphere's (u, v), the tablecloth the triangles' blended vt, and
+        // the eclipse and the diagnostic chart the repeat and clamp lookups.
+        tasks.put("globe", StudentTask.SPHERE);
+        tasks.put("tablecloth", StudentTask.TRIANGLE);
+        tasks.put("eclipse", StudentTask.TEXTURE);
+        tasks.put("diagnostic", StudentTask.TEXTURE);
         // Task 6 (extra credit): capped cylinders, upright and placed by a group.
         tasks.put("cylinder", StudentTask.CYLINDER);
         // The numerically hard cases (scenes/hard, docs/numerics.md), each under the task whose code it strains most.
