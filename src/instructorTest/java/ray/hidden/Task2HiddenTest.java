@@ -106,4 +106,32 @@ public class Task2HiddenTest {
         assertFalse("the ray 2e-3 beside the center must miss the sphere of radius 1e-3",
                 tiny.intersect(miss, new Ray(center.plus(v(2e-3, 0, 10)), v(0, 0, -1))));
     }
+
+    /**
+     * Seeded: spheres of radius 0.1 to 10 up to 10 from the origin, hit from outside at a point of
+     * latitude within ±80° and longitude not within 5° of the seam; the reported (u, v) must give
+     * back the point's direction: longitude 2π(u − ½), latitude π(v − ½).
+     */
+    @Test
+    public void textureCoordinatesGiveBackTheHitDirection() {
+        java.util.Random random = new java.util.Random(2_000_014);
+        for (int k = 0; k < 300; k++) {
+            Vec3 center = v(20 * random.nextDouble() - 10, 20 * random.nextDouble() - 10, 20 * random.nextDouble() - 10);
+            double radius = 0.1 + 9.9 * random.nextDouble();
+            double longitude = Math.toRadians(-175 + 350 * random.nextDouble());
+            double latitude = Math.toRadians(-80 + 160 * random.nextDouble());
+            Vec3 n = v(Math.cos(latitude) * Math.sin(longitude), Math.sin(latitude), Math.cos(latitude) * Math.cos(longitude));
+            Vec3 point = center.plus(n.times(radius));
+            // Come in along −n scaled by 0.5 to 3, from 1 to 5 radii out.
+            Vec3 d = n.times(-(0.5 + 2.5 * random.nextDouble()));
+            Vec3 origin = point.minus(d.times(radius * (1 + 4 * random.nextDouble()) / d.length()));
+            Sphere sphere = new Sphere(center, radius);
+            IntersectionRecord out = new IntersectionRecord();
+            String what = sphere + ", the ray " + origin + " + t·" + d + " toward the point at longitude "
+                    + Math.toDegrees(longitude) + "°, latitude " + Math.toDegrees(latitude) + "°";
+            assertTrue(what + " must hit", sphere.intersect(out, new Ray(origin, d)));
+            assertEquals(what + ": out.texU = ½ + longitude/2π", 0.5 + longitude / (2 * Math.PI), out.texU, 1e-9);
+            assertEquals(what + ": out.texV = ½ + latitude/π", 0.5 + latitude / Math.PI, out.texV, 1e-9);
+        }
+    }
 }

@@ -113,4 +113,42 @@ public class Task3HiddenTest {
         assertFalse("the ray toward −z over (100.011, 200.005, 300) passes beside the small triangle",
                 small.intersect(new IntersectionRecord(), new Ray(v0.plus(v(0.011, 0.005, 5)), v(0, 0, -1))));
     }
+
+    /**
+     * Seeded: random triangles up to 10 from the origin with random texture coordinates in [−2, 3],
+     * hit at random barycentrics (each at least 0.01); the reported (u, v) must be the blend
+     * (1 − β − γ)·vt0 + β·vt1 + γ·vt2 at the β and γ the ray was aimed at.
+     */
+    @Test
+    public void textureCoordinatesAreTheBarycentricBlend() {
+        java.util.Random random = new java.util.Random(3_000_014);
+        for (int k = 0; k < 300; k++) {
+            Vec3[] corners = new Vec3[3];
+            Vec3[] vts = new Vec3[3];
+            for (int c = 0; c < 3; c++) {
+                corners[c] = v(20 * random.nextDouble() - 10, 20 * random.nextDouble() - 10, 20 * random.nextDouble() - 10);
+                vts[c] = v(5 * random.nextDouble() - 2, 5 * random.nextDouble() - 2, 0);
+            }
+            Vec3 normal = corners[1].minus(corners[0]).cross(corners[2].minus(corners[0]));
+            if (normal.length() < 1) {
+                continue; // nearly degenerate: not what this test is about
+            }
+            double beta = 0.01 + 0.98 * random.nextDouble();
+            double gamma = 0.01 + (0.98 - beta) * random.nextDouble();
+            Vec3 point = corners[0].plus(corners[1].minus(corners[0]).times(beta)).plus(corners[2].minus(corners[0]).times(gamma));
+            Vec3 unit = normal.normalized();
+            Vec3 origin = point.plus(unit.times(1 + 4 * random.nextDouble()));
+            Triangle triangle = new Triangle(corners[0], corners[1], corners[2]);
+            triangle.setVt0(vts[0]);
+            triangle.setVt1(vts[1]);
+            triangle.setVt2(vts[2]);
+            IntersectionRecord out = new IntersectionRecord();
+            String what = "the triangle " + corners[0] + ", " + corners[1] + ", " + corners[2] + " with vt " + vts[0] + ", "
+                    + vts[1] + ", " + vts[2] + " hit at β = " + beta + ", γ = " + gamma;
+            assertTrue(what + " must be hit", triangle.intersect(out, new Ray(origin, point.minus(origin))));
+            double alpha = 1 - beta - gamma;
+            assertEquals(what + ": out.texU", alpha * vts[0].x + beta * vts[1].x + gamma * vts[2].x, out.texU, 1e-8);
+            assertEquals(what + ": out.texV", alpha * vts[0].y + beta * vts[1].y + gamma * vts[2].y, out.texV, 1e-8);
+        }
+    }
 }
