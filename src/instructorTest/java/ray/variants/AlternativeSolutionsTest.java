@@ -68,6 +68,12 @@ public class AlternativeSolutionsTest {
                 Variant.correct("group-compare-t", 4), Variant.correct("group-index-loop", 4));
     }
 
+    @Test
+    public void textureLookupsWrittenAnyCorrectWayEarnEveryPoint() throws Exception {
+        assertEveryPoint(Variant.correct("texture-modulo", 5), Variant.correct("texture-wrap-first", 5),
+                Variant.correct("texture-if-chains", 5), Variant.correct("texture-round", 5));
+    }
+
     /**
      * The cylinder is extra credit, so all its tests are bonus tests: a correct cylinder must pass
      * every one of them (the regular-points rule above would hold vacuously), and a wrong one must
@@ -93,7 +99,8 @@ public class AlternativeSolutionsTest {
     public void knownMistakesLosePointsInTheirOwnTask() throws Exception {
         for (Variant wrong : List.of(Variant.wrong("camera-flipped-v", 1), Variant.wrong("camera-uncentered", 1),
                 Variant.wrong("sphere-far-root", 2), Variant.wrong("triangle-no-sum-check", 3),
-                Variant.wrong("group-first-hit", 4))) {
+                Variant.wrong("group-first-hit", 4), Variant.wrong("texture-no-half", 5), Variant.wrong("texture-flipped-rows", 5),
+                Variant.wrong("texture-clamp-to-width", 5))) {
             List<VariantGrading.Outcome> outcomes = VariantGrading.run(wrong, (task, type) -> task == wrong.task, work);
             assertTrue(wrong + " ran no test of its task", !outcomes.isEmpty());
             List<VariantGrading.Outcome> lost = outcomes.stream().filter(o -> !o.bonus && !o.passed()).collect(Collectors.toList());

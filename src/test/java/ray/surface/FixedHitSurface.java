@@ -6,7 +6,8 @@ import ray.math.Vec3;
 
 /**
  * A stand-in surface for the Group tests: every ray "hits" it at one fixed t, if that t lies
- * inside the ray's open segment (start, end), with a normal and barycentrics of the test's choice.
+ * inside the ray's open segment (start, end), with a normal, barycentrics and texture coordinates
+ * of the test's choice.
  * It lets Group be tested without Sphere or Triangle, so the tasks can be done in any order.
  */
 public final class FixedHitSurface extends Surface {
@@ -15,6 +16,8 @@ public final class FixedHitSurface extends Surface {
     private final Vec3 normal;
     private final double beta;
     private final double gamma;
+    private final double texU;
+    private final double texV;
 
     /** A surface called {@code name} that is hit at {@code t} with {@code normal} (β = γ = 0). */
     public FixedHitSurface(String name, double t, Vec3 normal) {
@@ -22,11 +25,17 @@ public final class FixedHitSurface extends Surface {
     }
 
     public FixedHitSurface(String name, double t, Vec3 normal, double beta, double gamma) {
+        this(name, t, normal, beta, gamma, 0, 0);
+    }
+
+    public FixedHitSurface(String name, double t, Vec3 normal, double beta, double gamma, double texU, double texV) {
         this.name = name;
         this.t = t;
         this.normal = normal;
         this.beta = beta;
         this.gamma = gamma;
+        this.texU = texU;
+        this.texV = texV;
     }
 
     public double hitT() {
@@ -49,6 +58,8 @@ public final class FixedHitSurface extends Surface {
         out.surface = this;
         out.beta = beta;
         out.gamma = gamma;
+        out.texU = texU;
+        out.texV = texV;
         return true;
     }
 

@@ -157,7 +157,7 @@ public class GroupTest {
 
     @Test
     public void recordHoldsEverythingTheClosestChildReported() {
-        FixedHitSurface triangleLike = new FixedHitSurface("with barycentrics", 3, v(0.6, 0, 0.8), 0.25, 0.5);
+        FixedHitSurface triangleLike = new FixedHitSurface("with barycentrics", 3, v(0.6, 0, 0.8), 0.25, 0.5, 0.125, 0.875);
         IntersectionRecord out = new IntersectionRecord();
         assertTrue("children hit at t = 4, 3, 14: the group must hit", groupOf(near, triangleLike, far).intersect(out, downZ()));
         assertSame("the closest child, hit at t = 3", triangleLike, out.surface);
@@ -166,6 +166,8 @@ public class GroupTest {
         assertVec("normal of the closest hit", v(0.6, 0, 0.8), out.normal, 0);
         assertEquals("beta of the closest hit", 0.25, out.beta, 0);
         assertEquals("gamma of the closest hit", 0.5, out.gamma, 0);
+        assertEquals("texU (texture coordinate) of the closest hit: copy every field, e.g. with out.set(record)", 0.125, out.texU, 0);
+        assertEquals("texV (texture coordinate) of the closest hit: copy every field, e.g. with out.set(record)", 0.875, out.texV, 0);
     }
 
     private static <T> List<List<T>> permutations(List<T> items) {

@@ -34,6 +34,8 @@ public class Group extends Surface {
                 out.surface = temp.surface;
                 out.beta = temp.beta;
                 out.gamma = temp.gamma;
+                out.texU = temp.texU;
+                out.texV = temp.texV;
             }
         }
         return hitAnything;

@@ -36,6 +36,8 @@ public class Sphere extends SphereShape {
         out.location = ray.pointAt(t);
         out.normal = out.location.minus(center).times(1 / radius);
         out.surface = this;
+        out.texU = 0.5 + Math.atan2(out.normal.x, out.normal.z) / (2 * Math.PI);
+        out.texV = 0.5 + Math.asin(Math.max(-1, Math.min(1, out.normal.y))) / Math.PI;
         return true;
     }
 }

@@ -40,6 +40,10 @@ public class Sphere extends SphereShape {
         out.location = ray.pointAt(t);
         out.normal = out.location.minus(center).times(1 / radius);
         out.surface = this;
+        // Texture coordinates from the un-normalized offset; v by acos: 1 − acos(y)/π = ½ + asin(y)/π.
+        Vec3 offset = out.location.minus(center);
+        out.texU = Math.atan2(offset.x, offset.z) / (2 * Math.PI) + 0.5;
+        out.texV = 1 - Math.acos(Math.max(-1, Math.min(1, offset.y / radius))) / Math.PI;
         return true;
     }
 }

@@ -36,6 +36,9 @@ public class Sphere extends SphereShape {
         out.location = ray.pointAt(root);
         out.normal = out.location.minus(center).normalized();
         out.surface = this;
+        Vec3 n = out.normal;
+        out.texU = 0.5 + Math.atan2(n.x, n.z) * (0.5 / Math.PI);
+        out.texV = 0.5 + Math.asin(n.y) / Math.PI;
         return true;
     }
 }

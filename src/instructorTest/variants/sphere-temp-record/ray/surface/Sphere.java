@@ -34,6 +34,10 @@ public class Sphere extends SphereShape {
                 hit.location = p.plus(d.times(t));
                 hit.normal = hit.location.minus(center).normalized();
                 hit.surface = this;
+                // Latitude as atan2(y, √(x² + z²)), which needs no clamping.
+                Vec3 offset = hit.location.minus(center);
+                hit.texU = 0.5 + Math.atan2(offset.x, offset.z) / (2 * Math.PI);
+                hit.texV = 0.5 + Math.atan2(offset.y, Math.hypot(offset.x, offset.z)) / Math.PI;
                 out.set(hit);
                 return true;
             }

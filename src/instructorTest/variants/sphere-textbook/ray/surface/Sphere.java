@@ -37,6 +37,9 @@ public class Sphere extends SphereShape {
         out.location = ray.pointAt(t);
         out.normal = out.location.minus(center).times(1 / radius);
         out.surface = this;
+        // The textbook's (φ + π)/2π and (θ + π/2)/π, asin unclamped as students write it.
+        out.texU = (Math.atan2(out.normal.x, out.normal.z) + Math.PI) / (2 * Math.PI);
+        out.texV = (Math.asin(out.normal.y) + Math.PI / 2) / Math.PI;
         return true;
     }
 }

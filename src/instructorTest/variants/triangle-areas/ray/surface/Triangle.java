@@ -44,6 +44,10 @@ public class Triangle extends TriangleShape {
         out.surface = this;
         out.beta = beta;
         out.gamma = gamma;
+        // vt0 + β(vt1 − vt0) + γ(vt2 − vt0): the same blend, written from the first corner.
+        Vec3 uv = vt0.plus(vt1.minus(vt0).times(beta)).plus(vt2.minus(vt0).times(gamma));
+        out.texU = uv.x;
+        out.texV = uv.y;
         return true;
     }
 }

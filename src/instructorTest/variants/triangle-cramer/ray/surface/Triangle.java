@@ -47,6 +47,9 @@ public class Triangle extends TriangleShape {
         out.surface = this;
         out.beta = beta;
         out.gamma = gamma;
+        double alpha = 1 - beta - gamma;
+        out.texU = alpha * vt0.x + beta * vt1.x + gamma * vt2.x;
+        out.texV = alpha * vt0.y + beta * vt1.y + gamma * vt2.y;
         return true;
     }
 }

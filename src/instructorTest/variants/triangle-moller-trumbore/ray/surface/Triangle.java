@@ -47,6 +47,9 @@ public class Triangle extends TriangleShape {
         out.surface = this;
         out.beta = u;
         out.gamma = v;
+        Vec3 texture = vt0.times(1 - u - v).plus(vt1.times(u)).plus(vt2.times(v));
+        out.texU = texture.x;
+        out.texV = texture.y;
         return true;
     }
 }

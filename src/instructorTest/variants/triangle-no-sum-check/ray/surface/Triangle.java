@@ -44,6 +44,8 @@ public class Triangle extends TriangleShape {
         out.surface = this;
         out.beta = u;
         out.gamma = v;
+        out.texU = (1 - u - v) * vt0.x + u * vt1.x + v * vt2.x;
+        out.texV = (1 - u - v) * vt0.y + u * vt1.y + v * vt2.y;
         return true;
     }
 }

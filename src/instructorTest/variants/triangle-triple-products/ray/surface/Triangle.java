@@ -42,6 +42,8 @@ public class Triangle extends TriangleShape {
         hit.surface = this;
         hit.beta = beta;
         hit.gamma = gamma;
+        hit.texU = vt0.x + beta * (vt1.x - vt0.x) + gamma * (vt2.x - vt0.x);
+        hit.texV = vt0.y + beta * (vt1.y - vt0.y) + gamma * (vt2.y - vt0.y);
         out.set(hit);
         return true;
     }
