@@ -140,6 +140,7 @@ public class RenderCommandTest {
             // One triangle: every camera and shadow ray is one intersection test.
             assertEquals(32 * samples[k], s.get("intersectionTests").getAsLong());
             assertEquals("Lambertian only", 0, s.get("specularEvaluations").getAsLong());
+            assertEquals("no texture", 0, s.get("textureLookups").getAsLong());
         }
         try (var files = Files.list(stats.getParent())) {
             assertEquals("no temporary file is left beside the stats", 1, files.count());

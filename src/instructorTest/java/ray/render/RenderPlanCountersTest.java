@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.Collectors;
 import org.junit.Test;
 import ray.image.Image;
@@ -24,6 +25,7 @@ import ray.shading.Light;
 import ray.shading.Phong;
 import ray.shading.RGBNormals;
 import ray.shading.Shader;
+import ray.shading.Texture;
 
 /**
  * The render plan proved by the counters: an effect the plan skips costs no ray and no evaluation
@@ -130,7 +132,13 @@ public class RenderPlanCountersTest {
             Map.entry("far-from-origin", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION, Effect.TRANSFORMS)),
             Map.entry("far-tiny-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("huge-ground-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
-            Map.entry("inside-closed-mesh", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.TRANSFORMS))));
+            Map.entry("inside-closed-mesh", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.TRANSFORMS)),
+            Map.entry("cylinder", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS)),
+            Map.entry("globe", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES)),
+            Map.entry("eclipse", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES)),
+            Map.entry("tablecloth", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES, Effect.TRANSFORMS,
+                    Effect.VERTEX_NORMALS)),
+            Map.entry("diagnostic", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES, Effect.TRANSFORMS))));
 
     private static List<Path> shippedScenes() {
         return SceneFiles.under(Path.of("scenes"));
@@ -162,6 +170,7 @@ public class RenderPlanCountersTest {
             assertEquals(name, plan.runs(Effect.SHADOWS), result.rays.shadow > 0);
             assertEquals(name, plan.runs(Effect.SPECULAR), result.rays.specular > 0);
             assertEquals(name, plan.runs(Effect.REFLECTION), result.rays.reflection > 0);
+            assertEquals(name, plan.runs(Effect.TEXTURES), result.rays.textureLookups > 0);
             assertEquals(name, result.rays.total() * plan.primitives(), result.rays.intersectionTests);
         }
     }
@@ -210,5 +219,42 @@ public class RenderPlanCountersTest {
         RenderResult result = new Renderer(scene, 1, 1).render();
         assertEquals(List.of(), result.plan.effects());
         assertEquals(0, result.rays.shadow);
+    }
+
+    /** A texture of one texel that counts its lookups (from every render thread). */
+    private static final class CountingTexture extends Texture {
+        final AtomicLong lookups = new AtomicLong();
+
+        CountingTexture() {
+            super(new Image(1, 1));
+        }
+
+        @Override
+        public Vec3 getTexColor(double u, double v) {
+            lookups.incrementAndGet();
+            return image.get(0, 0);
+        }
+    }
+
+    @Test
+    public void aTextureIsLookedUpOncePerLitHitAndNeverWithoutALight() {
+        CountingTexture texture = new CountingTexture();
+        Lambertian shader = new Lambertian();
+        shader.setTexture(texture);
+        Scene dark = floorScene(shader);
+        dark.complete();
+        RenderResult unlit = new Renderer(dark, 4, 2).render();
+        assertEquals("no light, no lookup", 0, texture.lookups.get());
+        assertEquals(0, unlit.rays.textureLookups);
+        assertTrue(unlit.plan.skipped().contains("textures"));
+
+        Scene lit = floorScene(shader);
+        lit.addLight(new Light(v(0, 0, 3), Vec3.ONE));
+        lit.addLight(new Light(v(2, 0, 3), Vec3.ONE));
+        lit.complete();
+        RenderResult result = new Renderer(lit, 4, 2).render();
+        // 2×2 grid: 60 hits, one lookup each whatever the number of lights; the counter agrees with the texture.
+        assertEquals(60, texture.lookups.get());
+        assertEquals(60, result.rays.textureLookups);
     }
 }

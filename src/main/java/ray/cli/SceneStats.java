@@ -25,6 +25,7 @@ final class SceneStats {
     Map<String, Long> rays;
     long intersectionTests;
     long specularEvaluations;
+    long textureLookups;
     /** The plan line, printed under the summary; not in the JSON (effects and skipped hold it). */
     transient String planLine;
 
@@ -42,6 +43,7 @@ final class SceneStats {
         s.rays = result.rays.byKind();
         s.intersectionTests = result.rays.intersectionTests;
         s.specularEvaluations = result.rays.specular;
+        s.textureLookups = result.rays.textureLookups;
         s.planLine = result.plan.describe();
         return s;
     }

@@ -2,6 +2,7 @@ package ray.render;
 
 import java.util.IdentityHashMap;
 import java.util.Map;
+import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
@@ -10,15 +11,16 @@ import ray.shading.Shader;
 
 /**
  * The renderer's tracer for one thread: {@link SceneTracer}'s rules, counting the work as it goes
- * (camera, shadow and reflection rays, and the specular terms of the shaders that have one), so
+ * (camera, shadow and reflection rays, the specular terms and texture lookups of the shaders that
+ * have them), so
  * that {@code --stats} shows what a scene costs and tests can prove that a scene without an effect
  * does none of its work. Not shared between threads.
  */
 final class CountingTracer extends SceneTracer {
     private final long primitives;
     private final RayStats stats = new RayStats();
-    /** Whether each shader met so far evaluates a specular term per light. */
-    private final Map<Shader, Boolean> specular = new IdentityHashMap<>();
+    /** The effects of each shader met so far, its parts' included. */
+    private final Map<Shader, Set<Effect>> effects = new IdentityHashMap<>();
 
     CountingTracer(RenderPlan plan) {
         super(plan.scene(), plan.offsets());
@@ -40,12 +42,19 @@ final class CountingTracer extends SceneTracer {
         return radiance(ray, 0);
     }
 
-    /** A shader with a specular term evaluates it once per light, shadowed or not. */
+    /**
+     * A shader with a specular term evaluates it once per light, shadowed or not; a textured one looks
+     * its texture up once per hit when there is a light to use the color (see DirectLighting.shade).
+     */
     @Override
     protected Vec3 shade(IntersectionRecord hit, Ray ray, int depth) {
-        Shader shader = hit.surface.getShader();
-        if (specular.computeIfAbsent(shader, s -> s.allEffects().contains(Effect.SPECULAR))) {
-            stats.specular += lights().size();
+        Set<Effect> shaderEffects = effects.computeIfAbsent(hit.surface.getShader(), Shader::allEffects);
+        int lights = lights().size();
+        if (shaderEffects.contains(Effect.SPECULAR)) {
+            stats.specular += lights;
+        }
+        if (lights > 0 && shaderEffects.contains(Effect.TEXTURES)) {
+            stats.textureLookups++;
         }
         return super.shade(hit, ray, depth);
     }

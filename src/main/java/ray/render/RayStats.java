@@ -13,6 +13,8 @@ public final class RayStats {
     public long reflection;
     /** Phong specular terms evaluated: one per light per hit of a Phong surface (a glaze's substrate too). */
     public long specular;
+    /** Texture lookups: one per hit of a textured shader (a glaze's substrate too), when the scene has a light. */
+    public long textureLookups;
     /**
      * Ray–primitive intersection tests: (rays traced) × (primitives in the scene tree), summed over
      * the ray kinds. Exact for the linear closest-hit loop of Group, which tests every ray against
@@ -26,6 +28,7 @@ public final class RayStats {
         shadow += other.shadow;
         reflection += other.reflection;
         specular += other.specular;
+        textureLookups += other.textureLookups;
         intersectionTests += other.intersectionTests;
     }
 

@@ -48,6 +48,10 @@ public final class RenderPlan {
             running.put(Effect.LIGHTING, count(walk.count(Effect.LIGHTING), "shader"));
             running.put(Effect.SHADOWS, count(lights, "light"));
         }
+        // A texture replaces the diffuse color of a lit shader, so without a light no lookup is needed.
+        if (lights > 0 && walk.count(Effect.TEXTURES) > 0) {
+            running.put(Effect.TEXTURES, count(walk.count(Effect.TEXTURES), "shader"));
+        }
         if (walk.count(Effect.SPECULAR) > 0) {
             running.put(Effect.SPECULAR, count(walk.count(Effect.SPECULAR), "shader"));
         }

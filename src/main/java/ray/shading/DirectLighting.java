@@ -56,6 +56,9 @@ public abstract class DirectLighting extends Shader {
 
     @Override
     public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
+        if (tracer.lights().isEmpty()) {
+            return Vec3.ZERO; // no light, no texture lookup (the sum below would be zero)
+        }
         Vec3 toEye = towardEye(ray);
         Vec3 kd = diffuseColorAt(hit);
         double r = 0, g = 0, b = 0;

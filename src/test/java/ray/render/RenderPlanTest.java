@@ -7,6 +7,7 @@ import static ray.testing.Asserts.v;
 
 import java.util.List;
 import org.junit.Test;
+import ray.image.Image;
 import ray.math.Vec3;
 import ray.scene.Scene;
 import ray.shading.Effect;
@@ -15,6 +16,7 @@ import ray.shading.Lambertian;
 import ray.shading.Light;
 import ray.shading.Phong;
 import ray.shading.RGBNormals;
+import ray.shading.RepeatTexture;
 import ray.shading.Shader;
 import ray.surface.Group;
 import ray.surface.Placement;
@@ -186,5 +188,41 @@ public class RenderPlanTest {
         assertEquals("effects: lighting(1 shader) shadows(2 lights) specular(1 shader);"
                 + " skipped: textures, reflection, antialiasing, transforms, vertex normals", RenderPlan.of(scene).describe());
         assertEquals(List.of("textures", "reflection", "antialiasing", "transforms", "vertex normals"), RenderPlan.of(scene).skipped());
+    }
+
+    private static Lambertian textured() {
+        Lambertian shader = new Lambertian();
+        shader.setTexture(new RepeatTexture(new Image(2, 2)));
+        return shader;
+    }
+
+    @Test
+    public void texturedShadersWithALightRunTextures() {
+        Scene scene = emptyScene();
+        scene.addLight(new Light(v(0, 0, 3), Vec3.ONE));
+        Lambertian shared = textured();
+        scene.addSurface(sphere(shared));
+        scene.addSurface(flatTriangle(shared));
+        Glazed glazed = new Glazed();
+        Phong substrate = new Phong();
+        substrate.setTexture(new RepeatTexture(new Image(1, 1)));
+        glazed.setSubstrate(substrate);
+        scene.addSurface(sphere(glazed));
+        scene.addSurface(sphere(new Lambertian()));
+        scene.complete();
+        RenderPlan plan = RenderPlan.of(scene);
+        assertTrue(plan.runs(Effect.TEXTURES));
+        // The shared shader counts once; the glaze's substrate counts as its own shader.
+        assertTrue(plan.effects().toString(), plan.effects().contains("textures(2 shaders)"));
+    }
+
+    @Test
+    public void texturesWithoutALightAreSkipped() {
+        Scene scene = emptyScene();
+        scene.addSurface(sphere(textured()));
+        scene.complete();
+        RenderPlan plan = RenderPlan.of(scene);
+        assertFalse(plan.runs(Effect.TEXTURES));
+        assertTrue(plan.skipped().contains("textures"));
     }
 }
