@@ -174,7 +174,8 @@ public class TraceCommandTest {
         String[][] cases = {
             {"scenes/one-sphere.xml"}, {"scenes/one-sphere-phong.xml"}, {"scenes/two-boxes.xml"},
             {"scenes/glazed-sphere.xml"}, {"scenes/group-transforms.xml"}, {"scenes/rgb-normals.xml"},
-            {"scenes/antialiased.xml", "--samples", "4"},
+            {"scenes/antialiased.xml", "--samples", "4"}, {"scenes/textured/globe.xml"}, {"scenes/textured/tablecloth.xml"},
+            {"scenes/textured/diagnostic.xml"}, {"scenes/cylinder.xml"},
         };
         for (String[] c : cases) {
             Path sceneFile = Path.of(c[0]);
@@ -196,6 +197,38 @@ public class TraceCommandTest {
                 assertTrue(run.out, !run.out.contains("the trace computed"));
             }
         }
+    }
+
+    /**
+     * globe.xml, pixel (160, 120) hits the unit sphere at the origin: (u, v) follow from the hit's
+     * unit normal by u = ½ + atan2(x, z)/2π, v = ½ + asin(y)/π; the texel is ((int) (u·512 + ½),
+     * (int) (v·256 + ½)), row H − 1 − j of the texture file from the top, and its color / 255 is
+     * the kd that the diffuse terms use.
+     */
+    @Test
+    public void texturedPixelShowsItsTexCoordsTexelAndColor() throws Exception {
+        CliRun run = CliRun.of("trace", "scenes/textured/globe.xml", "160", "120");
+        assertEquals(run.toString(), 0, run.status);
+        String out = run.out;
+        Vec3 n = vec(row(out, "normal"));
+        double u = 0.5 + Math.atan2(n.x, n.z) / (2 * Math.PI);
+        double v = 0.5 + Math.asin(n.y) / Math.PI;
+        String lookup = section(out, "Shading at the hit", "Light 1");
+        assertVec(v(u, v, 0), vec2(row(lookup, "(u, v)")), TOL);
+        int i = (int) (u * 512 + 0.5);
+        int j = (int) (v * 256 + 0.5);
+        assertEquals(256, i);
+        assertEquals(150, j);
+        String texel = row(lookup, "texel");
+        assertTrue(texel, texel.startsWith("texel        (256, 150) of 512×256") && texel.contains("row 105 of the image file from the top"));
+        int[] file = pixel(PngReader.read(Path.of("scenes/textures/globe.png")), i, 255 - j);
+        double[] color = numbers(row(out, "its color"));
+        assertArrayEquals(file, new int[] {(int) color[0], (int) color[1], (int) color[2]});
+        Vec3 kd = v(file[0] / 255.0, file[1] / 255.0, file[2] / 255.0);
+        assertVec(kd, lastVec(row(out, "its color")), TOL);
+        assertVec(kd, vec(row(out, "kd ")), TOL);
+        assertTrue(out, row(out, "diffuse").contains("= " + row(out, "kd ").substring(2).strip().split("   ")[0]));
+        assertTrue(out, !out.contains("!"));
     }
 
     /** group-transforms.xml, pixel (250, 130) hits the vase: the mesh is scaled by 1.2 and moved by (2, 0, −0.5). */

@@ -54,7 +54,7 @@ final class LightReport {
     }
 
     private void terms(Shader shader, IntersectionRecord hit, Ray ray, Vec3 l, double nl, double r2, Vec3 intensity, String in) {
-        Vec3 kd = ShaderParameters.diffuseColor(shader);
+        Vec3 kd = ShaderParameters.diffuseColorAt(shader, hit);
         if (kd != null) {
             Vec3 diffuse = kd.times(intensity).times(Math.max(0, nl) / r2);
             out.println(Fmt.row(in, "diffuse", "kd ⊙ I · max(0, n·l) / r² = " + Fmt.vec(kd) + " ⊙ " + Fmt.vec(intensity)

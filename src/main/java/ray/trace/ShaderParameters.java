@@ -1,6 +1,8 @@
 package ray.trace;
 
+import ray.IntersectionRecord;
 import ray.math.Vec3;
+import ray.shading.DirectLighting;
 import ray.shading.Lambertian;
 import ray.shading.Phong;
 import ray.shading.Shader;
@@ -16,6 +18,11 @@ final class ShaderParameters {
     static Vec3 diffuseColor(Shader shader) {
         return shader instanceof Lambertian ? ((Lambertian) shader).getDiffuseColor()
                 : shader instanceof Phong ? ((Phong) shader).getDiffuseColor() : null;
+    }
+
+    /** kd at a hit: a textured shader's texture color there, else its diffuse color. */
+    static Vec3 diffuseColorAt(Shader shader, IntersectionRecord hit) {
+        return shader instanceof DirectLighting ? ((DirectLighting) shader).diffuseColorAt(hit) : null;
     }
 
     static Vec3 specularColor(Shader shader) {

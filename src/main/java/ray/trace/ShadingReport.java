@@ -13,6 +13,7 @@ import ray.shading.Light;
 import ray.shading.Phong;
 import ray.shading.RGBNormals;
 import ray.shading.Shader;
+import ray.shading.Texture;
 
 /**
  * How the hit's shader turns it into radiance, step by step: light by light for Lambertian and
@@ -41,7 +42,10 @@ final class ShadingReport {
         Vec3 kd = ShaderParameters.diffuseColor(shader);
         Vec3 ks = ShaderParameters.specularColor(shader);
         Double p = ShaderParameters.exponent(shader);
-        if ((shader instanceof Lambertian || shader instanceof Phong) && kd != null) {
+        Texture texture = shader instanceof DirectLighting ? ((DirectLighting) shader).getTexture() : null;
+        if (texture != null) {
+            s.append(", kd from ").append(texture);
+        } else if ((shader instanceof Lambertian || shader instanceof Phong) && kd != null) {
             s.append(", kd = ").append(Fmt.vec(kd));
         }
         if (shader instanceof Phong && ks != null && p != null) {
@@ -79,6 +83,10 @@ final class ShadingReport {
                 : "L = Σ over lights of kd ⊙ I · max(0, n·l) / r²") + ", without the lights whose shadow ray is blocked");
         out.println(Fmt.row(in, "n", Fmt.vec(hit.normal) + "   (the hit's unit normal)"));
         out.println(Fmt.row(in, "e", Fmt.vec(ray.direction.normalized().negate()) + "   (unit vector toward the eye)"));
+        Texture texture = ((DirectLighting) shader).getTexture();
+        if (texture != null) {
+            TextureReport.explain(texture, hit, in, out);
+        }
         List<Light> lights = scene.getLights();
         if (lights.isEmpty()) {
             out.println(in + "The scene has no <light>, so the surface is black.");

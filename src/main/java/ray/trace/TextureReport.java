@@ -1,0 +1,62 @@
+package ray.trace;
+
+import java.io.PrintWriter;
+import ray.IntersectionRecord;
+import ray.image.Image;
+import ray.math.Vec3;
+import ray.shading.Texture;
+import ray.surface.Sphere;
+
+/**
+ * The texture lookup at a hit of a textured shader: the hit's (u, v), the texel the course's
+ * convention picks for them, and the color the texture returns, which replaces kd. Where (u, v) lie
+ * inside [0, 1]² the texel is the same for Repeat and Clamp and for every way of rounding, so a
+ * lookup that returns another color is flagged; outside, the trace says what wrapping or clamping
+ * must do and leaves the answer to the texture.
+ */
+final class TextureReport {
+    private TextureReport() {
+    }
+
+    /** Prints the lookup and returns the color the texture gives at the hit (kd). */
+    static Vec3 explain(Texture texture, IntersectionRecord hit, String in, PrintWriter out) {
+        Image image = texture.getImage();
+        int w = image.width();
+        int h = image.height();
+        // The lookup takes float coordinates (Texture.colorAt), so the texel follows from these.
+        float u = (float) hit.texU;
+        float v = (float) hit.texV;
+        out.println(Fmt.row(in, "texture", texture + ", whose color at (u, v) replaces kd"));
+        out.println(Fmt.row(in, "(u, v)", "(" + Fmt.num(hit.texU) + ", " + Fmt.num(hit.texV) + ")   (the hit's texture coordinates"
+                + (hit.surface == null ? "" : ", set by " + hit.surface.getClass().getSimpleName() + ".intersect") + ")"));
+        if (hit.texU == 0 && hit.texV == 0 && hit.surface instanceof Sphere) {
+            out.println(Fmt.row(in, "!", "(0, 0) is the sphere's south pole: does Sphere.intersect set texU and texV? See TODO(Task 2)"));
+        }
+        double columnAt = u * w + 0.5;
+        double rowAt = v * h + 0.5;
+        int i = (int) columnAt;
+        int j = (int) rowAt;
+        String where = "i = (int) (u·" + w + " + ½) = (int) " + Fmt.num(columnAt) + ", j = (int) (v·" + h + " + ½) = (int) " + Fmt.num(rowAt);
+        Vec3 kd = texture.colorAt(hit);
+        if (columnAt >= 0 && columnAt < w && rowAt >= 0 && rowAt < h) {
+            Vec3 texel = image.get(i, j);
+            out.println(Fmt.row(in, "texel", "(" + i + ", " + j + ") of " + w + "×" + h + "   (" + where + "; j counts from the bottom,"
+                    + " so it is row " + (h - 1 - j) + " of the image file from the top)"));
+            out.println(Fmt.row(in, "its color", Fmt.rgb8(eightBit(texel)) + " in the file, / 255 = " + Fmt.vec(texel)));
+            if (!kd.equals(texel)) {
+                out.println(Fmt.row(in, "!", texture.getClass().getSimpleName() + ".getTexColor returned " + Fmt.vec(kd)
+                        + ", not that texel's color: is it still the stub? See TODO(Task 5)"));
+            }
+        } else {
+            out.println(Fmt.row(in, "texel", "(" + i + ", " + j + ") before it is"
+                    + " brought into the " + w + "×" + h + " image (" + where + "): a RepeatTexture wraps it, a ClampTexture clamps it"));
+        }
+        out.println(Fmt.row(in, "kd", Fmt.vec(kd) + "   (" + texture.getClass().getSimpleName() + ".getTexColor(u, v))"));
+        return kd;
+    }
+
+    /** A texel's 8-bit color: texels are the file's values / 255, so this is exact. */
+    private static int[] eightBit(Vec3 texel) {
+        return new int[] {(int) Math.round(texel.x * 255), (int) Math.round(texel.y * 255), (int) Math.round(texel.z * 255)};
+    }
+}

@@ -1,0 +1,112 @@
+package ray.trace;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+import static ray.testing.Asserts.v;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import org.junit.Test;
+import ray.IntersectionRecord;
+import ray.image.Image;
+import ray.math.Vec3;
+import ray.shading.Texture;
+import ray.surface.Sphere;
+
+/**
+ * What {@code ray1 trace} says of a texture lookup: the hit's (u, v), the texel the convention
+ * picks, its color, and a flag when the texture returns another color. Uses textures defined here,
+ * not the student's, so it runs the same before and after Task 5.
+ */
+public class TextureReportTest {
+
+    /** A 4×2 image whose texel (i, j) has the 8-bit color (10·i, 100·j, 7). */
+    private static Image distinctTexels() {
+        Image image = new Image(4, 2);
+        for (int j = 0; j < 2; j++) {
+            for (int i = 0; i < 4; i++) {
+                image.set(i, j, v(10 * i / 255.0, 100 * j / 255.0, 7 / 255.0));
+            }
+        }
+        return image;
+    }
+
+    /** The convention for coordinates inside [0, 1]², written out for the test. */
+    private static final class NearestTexel extends Texture {
+        NearestTexel() {
+            super(distinctTexels());
+        }
+
+        @Override
+        public Vec3 getTexColor(double u, double v) {
+            return image.get((int) (u * 4 + 0.5), (int) (v * 2 + 0.5));
+        }
+    }
+
+    /** What the handout's getTexColor returns before Task 5. */
+    private static final class StubTexture extends Texture {
+        StubTexture() {
+            super(distinctTexels());
+        }
+
+        @Override
+        public Vec3 getTexColor(double u, double v) {
+            return Vec3.ZERO;
+        }
+    }
+
+    private static IntersectionRecord hitAt(double u, double v) {
+        IntersectionRecord hit = new IntersectionRecord();
+        hit.texU = u;
+        hit.texV = v;
+        return hit;
+    }
+
+    private static String report(Texture texture, IntersectionRecord hit) {
+        StringWriter text = new StringWriter();
+        try (PrintWriter out = new PrintWriter(text)) {
+            TextureReport.explain(texture, hit, "", out);
+        }
+        return text.toString();
+    }
+
+    /** u·4 + ½ = 1.7 and v·2 + ½ = 1.7: texel (1, 1), the top row, so row 0 of the file; 8-bit (10, 100, 7). */
+    @Test
+    public void texelInsideTheImageIsNamedWithItsFileRowAndColor() {
+        String out = report(new NearestTexel(), hitAt(0.3, 0.6));
+        assertTrue(out, out.contains("(u, v)       (0.3, 0.6)"));
+        assertTrue(out, out.contains("texel        (1, 1) of 4×2   (i = (int) (u·4 + ½) = (int) 1.7, j = (int) (v·2 + ½) = (int) 1.7;"
+                + " j counts from the bottom, so it is row 0 of the image file from the top)"));
+        assertTrue(out, out.contains("its color    (10, 100, 7)  #0A6407 in the file, / 255 = (0.0392157, 0.392157, 0.027451)"));
+        assertTrue(out, out.contains("kd           (0.0392157, 0.392157, 0.027451)   (NearestTexel.getTexColor(u, v))"));
+        assertFalse(out, out.contains("!"));
+    }
+
+    @Test
+    public void aLookupThatReturnsAnotherColorIsFlaggedAsTask5() {
+        String out = report(new StubTexture(), hitAt(0.3, 0.6));
+        assertTrue(out, out.contains("!            StubTexture.getTexColor returned (0, 0, 0), not that texel's color:"
+                + " is it still the stub? See TODO(Task 5)"));
+    }
+
+    /** u·4 + ½ = 5.3: column 5 of a 4-texel image, which only wrapping or clamping can answer. */
+    @Test
+    public void texelOutsideTheImageIsLeftToRepeatOrClamp() {
+        String out = report(new StubTexture(), hitAt(1.2, 0.25));
+        assertTrue(out, out.contains("texel        (5, 1) before it is brought into the 4×2 image (i = (int) (u·4 + ½) = (int) 5.3,"
+                + " j = (int) (v·2 + ½) = (int) 1): a RepeatTexture wraps it, a ClampTexture clamps it"));
+        assertFalse("no verdict outside the image", out.contains("!"));
+    }
+
+    /** (0, 0) on a sphere is the south pole: more likely coordinates never set than a hit exactly there. */
+    @Test
+    public void zeroCoordinatesOnASphereSuggestTask2() {
+        IntersectionRecord hit = hitAt(0, 0);
+        hit.surface = new Sphere();
+        String out = report(new NearestTexel(), hit);
+        assertTrue(out, out.contains("set by Sphere.intersect"));
+        assertTrue(out, out.contains("(0, 0) is the sphere's south pole: does Sphere.intersect set texU and texV? See TODO(Task 2)"));
+        assertEquals(out, 1, out.split("!", -1).length - 1);
+    }
+}
