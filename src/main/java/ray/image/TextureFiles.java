@@ -2,7 +2,10 @@ package ray.image;
 
 import java.awt.image.BufferedImage;
 import java.awt.image.Raster;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Iterator;
@@ -24,26 +27,19 @@ public final class TextureFiles {
     /** Largest side and texel count a texture may have: 16 million texels take 400 MB as doubles. */
     public static final int MAX_SIDE = 8192;
     public static final long MAX_TEXELS = 4096L * 4096L;
+    /** Largest image file read: far above any texture within the texel limits, below what would strain the heap. */
+    public static final long MAX_FILE_BYTES = 256L << 20;
     private static final String FORMATS = "a PNG, JPEG, GIF or BMP image";
 
     private TextureFiles() {
     }
 
     public static Image read(Path file) {
-        if (!Files.exists(file)) {
-            throw problem("image file " + file + " does not exist; expected " + FORMATS
-                    + " (a relative path starts from the scene file's folder)");
+        byte[] bytes = bytesOf(file);
+        if (bytes.length == 0) {
+            throw problem("image file " + file + " is empty; expected " + FORMATS);
         }
-        if (!Files.isRegularFile(file)) {
-            throw problem("image path " + file + " is not a regular file; expected " + FORMATS);
-        }
-        if (!Files.isReadable(file)) {
-            throw problem("image file " + file + " cannot be read (no permission); expected a readable file");
-        }
-        try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
-            if (in == null) {
-                throw problem("image file " + file + " cannot be opened; expected " + FORMATS);
-            }
+        try (ImageInputStream in = ImageIO.createImageInputStream(new ByteArrayInputStream(bytes))) {
             Iterator<ImageReader> readers = ImageIO.getImageReaders(in);
             if (!readers.hasNext()) {
                 throw problem("image file " + file + " is not an image this program can read; expected " + FORMATS);
@@ -51,7 +47,7 @@ public final class TextureFiles {
             ImageReader reader = readers.next();
             try {
                 reader.setInput(in, true, true);
-                // The size comes from the header, before any texel is decoded, so a huge file costs nothing.
+                // The size comes from the header, before any texel is decoded, so a huge image costs nothing.
                 int width = reader.getWidth(0);
                 int height = reader.getHeight(0);
                 checkSize(file, width, height);
@@ -64,6 +60,34 @@ public final class TextureFiles {
                 throw (IllegalArgumentException) e;
             }
             throw problem("image file " + file + " is damaged or unreadable (" + e.getMessage() + "); expected " + FORMATS);
+        }
+    }
+
+    /**
+     * The file's bytes, read whole before decoding so that a file that cannot be read is told apart
+     * from one that is not an image (javax.imageio reports both as "no reader").
+     */
+    private static byte[] bytesOf(Path file) {
+        if (!Files.exists(file)) {
+            throw problem("image file " + file + " does not exist; expected " + FORMATS
+                    + " (a relative path starts from the scene file's folder)");
+        }
+        if (!Files.isRegularFile(file)) {
+            throw problem("image path " + file + " is not a regular file; expected " + FORMATS);
+        }
+        try {
+            long size = Files.size(file);
+            if (size > MAX_FILE_BYTES) {
+                throw problem("image file " + file + " has " + size + " bytes; expected " + FORMATS + " of at most "
+                        + MAX_FILE_BYTES + " bytes");
+            }
+            return Files.readAllBytes(file);
+        } catch (IOException e) {
+            String reason = e instanceof AccessDeniedException ? "permission denied"
+                    // A FileSystemException's message starts with the path, which the sentence already names.
+                    : e instanceof FileSystemException && ((FileSystemException) e).getReason() != null
+                            ? ((FileSystemException) e).getReason() : String.valueOf(e.getMessage());
+            throw problem("image file " + file + " cannot be read (" + reason + "); expected a readable image file");
         }
     }
 

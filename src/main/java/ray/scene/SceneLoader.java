@@ -124,7 +124,8 @@ public final class SceneLoader {
         String suggestion = Suggestions.closest(name, known);
         throw error(property, "unknown element <" + name + "> in " + describe(type)
                 + (suggestion != null ? " (did you mean <" + suggestion + ">?)" : "")
-                + "; expected one of " + String.join(", ", known));
+                + (known.isEmpty() ? "; expected no elements inside it (it has no properties)"
+                        : "; expected one of " + String.join(", ", known)));
     }
 
     /**
