@@ -8,22 +8,24 @@ import java.util.Random;
 
 /**
  * One fuzz case, a pure function of the seed and its index: which scene is loaded, which file of it
- * (the scene or one of its meshes) is damaged, and by which mutations, applied in order. The same
+ * (the scene or one of its meshes or textures) is damaged, and by which mutations, applied in order. The same
  * seed and index give the same case on any machine and with any number of workers.
  */
 final class FuzzCase {
     final long index;
     final Path scene;
-    /** The damaged file: the scene itself or one of its meshes. */
+    /** The damaged file: the scene itself or one of its meshes or textures. */
     final Path target;
+    final FileKind kind;
     final List<Mutation> mutations;
     /** The random numbers the mutations draw, seeded per case. */
     final long mutationSeed;
 
-    private FuzzCase(long index, Path scene, Path target, List<Mutation> mutations, long mutationSeed) {
+    private FuzzCase(long index, Path scene, Path target, FileKind kind, List<Mutation> mutations, long mutationSeed) {
         this.index = index;
         this.scene = scene;
         this.target = target;
+        this.kind = kind;
         this.mutations = mutations;
         this.mutationSeed = mutationSeed;
     }
@@ -32,12 +34,15 @@ final class FuzzCase {
         Random random = new Random(mix(seed, index));
         Path scene = corpus.scenes.get(random.nextInt(corpus.scenes.size()));
         List<Path> meshes = corpus.meshes.get(scene);
-        // A third of the cases of a mesh scene damage the mesh: it is most of the bytes such a scene reads.
-        boolean damageMesh = !meshes.isEmpty() && random.nextInt(3) == 0;
-        Path target = damageMesh ? meshes.get(random.nextInt(meshes.size())) : scene;
+        List<Path> files = new ArrayList<>(meshes);
+        files.addAll(corpus.textures.get(scene));
+        // A third of the cases of a scene with meshes or textures damage one of them: they are most of the bytes it reads.
+        boolean damageFile = !files.isEmpty() && random.nextInt(3) == 0;
+        Path target = damageFile ? files.get(random.nextInt(files.size())) : scene;
+        FileKind kind = !damageFile ? FileKind.SCENE : meshes.contains(target) ? FileKind.MESH : FileKind.TEXTURE;
         List<Mutation> kinds = new ArrayList<>();
         for (Mutation m : Mutation.values()) {
-            if (damageMesh ? m.forMeshes : m.forScenes) {
+            if (m.appliesTo(kind)) {
                 kinds.add(m);
             }
         }
@@ -48,7 +53,7 @@ final class FuzzCase {
         for (int i = 0; i < count; i++) {
             mutations.add(kinds.get(random.nextInt(kinds.size())));
         }
-        return new FuzzCase(index, scene, target, Collections.unmodifiableList(mutations), random.nextLong());
+        return new FuzzCase(index, scene, target, kind, Collections.unmodifiableList(mutations), random.nextLong());
     }
 
     /** The damaged bytes of the target. */
@@ -61,10 +66,6 @@ final class FuzzCase {
         return bytes;
     }
 
-    boolean damagesMesh() {
-        return !target.equals(scene);
-    }
-
     /** The seed's and index's bits mixed (SplitMix64's finalizer), so that neighbouring indices give unrelated cases. */
     private static long mix(long seed, long index) {
         long z = seed * 0x9E3779B97F4A7C15L + index;
@@ -75,6 +76,6 @@ final class FuzzCase {
 
     @Override
     public String toString() {
-        return "case " + index + ": " + mutations + " of " + target + (damagesMesh() ? " (mesh of " + scene + ")" : "");
+        return "case " + index + ": " + mutations + " of " + target + (kind == FileKind.SCENE ? "" : " (" + kind.label + " of " + scene + ")");
     }
 }

@@ -36,23 +36,19 @@ final class FuzzSummary {
         this.seed = seed;
         this.cases = cases;
         this.workers = workers;
-        for (Mutation m : Mutation.values()) {
-            if (m.forScenes) {
-                byRow.put("scene: " + m, new long[3]);
+        for (FileKind kind : FileKind.values()) {
+            for (Mutation m : Mutation.values()) {
+                if (m.appliesTo(kind)) {
+                    byRow.put(kind.label + ": " + m, new long[3]);
+                }
             }
+            byRow.put(kind.label + ": 2–3 stacked", new long[3]);
         }
-        byRow.put("scene: 2–3 stacked", new long[3]);
-        for (Mutation m : Mutation.values()) {
-            if (m.forMeshes) {
-                byRow.put("mesh: " + m, new long[3]);
-            }
-        }
-        byRow.put("mesh: 2–3 stacked", new long[3]);
     }
 
     synchronized void add(FuzzCase c, Outcome o, boolean sameBytes) {
         done++;
-        String prefix = c.damagesMesh() ? "mesh: " : "scene: ";
+        String prefix = c.kind.label + ": ";
         String row = prefix + (c.mutations.size() == 1 ? c.mutations.get(0).toString() : "2–3 stacked");
         byRow.get(row)[o.kind.ordinal()]++;
         unchanged += sameBytes ? 1 : 0;

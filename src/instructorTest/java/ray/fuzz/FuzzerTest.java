@@ -88,13 +88,18 @@ public class FuzzerTest {
     }
 
     @Test
-    public void theCorpusIsEveryShippedSceneWithItsMeshesAndNoReferenceRender() {
+    public void theCorpusIsEveryShippedSceneWithItsMeshesAndTexturesAndNoReferenceRender() {
         Corpus corpus = Corpus.of(Path.of("scenes"));
         assertEquals(20, corpus.scenes.size());
         assertEquals(java.util.List.of(Path.of("meshes/torus-flat.obj")), corpus.meshes.get(Path.of("mesh-flat.xml")));
         assertEquals(java.util.List.of(Path.of("meshes/icosphere-room.obj")),
                 corpus.meshes.get(Path.of("hard/inside-closed-mesh.xml")));
         assertTrue(corpus.meshes.get(Path.of("one-sphere.xml")).isEmpty());
+        assertTrue("the image size is not a texture", corpus.textures.get(Path.of("one-sphere.xml")).isEmpty());
+        assertEquals(java.util.List.of(Path.of("textures/globe.png"), Path.of("textures/moon.png")),
+                corpus.textures.get(Path.of("textured/eclipse.xml")));
+        assertEquals(java.util.List.of(Path.of("meshes/tablecloth.obj"), Path.of("meshes/vase.obj")),
+                corpus.meshes.get(Path.of("textured/tablecloth.xml")));
     }
 
     /**

@@ -1,8 +1,10 @@
 package ray.fuzz;
 
 import java.nio.charset.StandardCharsets;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Random;
+import java.util.Set;
 
 /**
  * The ways the fuzzer damages a file. Byte flips model a corrupted or mistyped file; deletions and
@@ -12,34 +14,36 @@ import java.util.Random;
  */
 enum Mutation {
     /** One to four bytes: a bit flipped, a byte replaced by any byte, inserted or removed. */
-    BYTE_FLIP(true, true),
+    BYTE_FLIP(FileKind.SCENE, FileKind.MESH, FileKind.TEXTURE),
     /** A whole element, with everything inside it, removed. */
-    ELEMENT_DELETE(true, false),
+    ELEMENT_DELETE(FileKind.SCENE),
     /** A whole element written twice in a row. */
-    ELEMENT_DUPLICATE(true, false),
+    ELEMENT_DUPLICATE(FileKind.SCENE),
     /** An attribute (type, name or ref) removed. */
-    ATTRIBUTE_DELETE(true, false),
+    ATTRIBUTE_DELETE(FileKind.SCENE),
     /** An attribute written a second time, in its own tag (not XML) or in another start tag. */
-    ATTRIBUTE_DUPLICATE(true, false),
+    ATTRIBUTE_DUPLICATE(FileKind.SCENE),
     /** A number replaced by a value from {@link #NUMBERS}, negated, scaled by a power of ten, or given an extra digit. */
-    NUMBER(true, true),
+    NUMBER(FileKind.SCENE, FileKind.MESH),
     /** A line of an OBJ file removed: a vertex that faces still count on, or a face. */
-    LINE_DELETE(false, true),
+    LINE_DELETE(FileKind.MESH),
     /** A line of an OBJ file written twice: one vertex more shifts no index, one face more is a duplicate. */
-    LINE_DUPLICATE(false, true);
+    LINE_DUPLICATE(FileKind.MESH);
 
     /** Values where arithmetic, geometry or the limits change behaviour. */
     static final List<String> NUMBERS = List.of("0", "-0", "-1", "1", "0.5", "1e-9", "1e-300", "4.9e-324", "1e300",
             "-1e300", "1.7976931348623157e308", "1e309", "2147483647", "2147483648", "-2147483648", "99999999999",
             "8192", "8193", "4096", "65536", "65537", "1e6", "3.", ".5", "007", "1e", "--1", "NaN", "Infinity", "");
 
-    /** Whether it applies to scene files (XML) and to mesh files (OBJ). */
-    final boolean forScenes;
-    final boolean forMeshes;
+    /** The kinds of file it applies to: scene files (XML), mesh files (OBJ), texture images (bytes only). */
+    private final Set<FileKind> kinds;
 
-    Mutation(boolean forScenes, boolean forMeshes) {
-        this.forScenes = forScenes;
-        this.forMeshes = forMeshes;
+    Mutation(FileKind first, FileKind... more) {
+        this.kinds = EnumSet.of(first, more);
+    }
+
+    boolean appliesTo(FileKind kind) {
+        return kinds.contains(kind);
     }
 
     /** Applies the mutation to a file's bytes; the text mutations read and write UTF-8. */
