@@ -32,8 +32,8 @@ final class TextureReport {
         if (hit.texU == 0 && hit.texV == 0 && hit.surface instanceof Sphere) {
             out.println(Fmt.row(in, "!", "(0, 0) is the sphere's south pole: does Sphere.intersect set texU and texV? See TODO(Task 2)"));
         }
-        double columnAt = u * w + 0.5;
-        double rowAt = v * h + 0.5;
+        double columnAt = (double) u * w + 0.5; // in double, as getTexColor(double, double) computes it
+        double rowAt = (double) v * h + 0.5;
         int i = (int) columnAt;
         int j = (int) rowAt;
         String where = "i = (int) (u·" + w + " + ½) = (int) " + Fmt.num(columnAt) + ", j = (int) (v·" + h + " + ½) = (int) " + Fmt.num(rowAt);
