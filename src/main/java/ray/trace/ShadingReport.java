@@ -8,7 +8,6 @@ import ray.math.Vec3;
 import ray.scene.Scene;
 import ray.shading.DirectLighting;
 import ray.shading.Glazed;
-import ray.shading.Lambertian;
 import ray.shading.Light;
 import ray.shading.Phong;
 import ray.shading.RGBNormals;
@@ -42,10 +41,10 @@ final class ShadingReport {
         Vec3 kd = ShaderParameters.diffuseColor(shader);
         Vec3 ks = ShaderParameters.specularColor(shader);
         Double p = ShaderParameters.exponent(shader);
-        Texture texture = shader instanceof DirectLighting ? ((DirectLighting) shader).getTexture() : null;
+        Texture texture = ShaderParameters.texture(shader);
         if (texture != null) {
             s.append(", kd from ").append(texture);
-        } else if ((shader instanceof Lambertian || shader instanceof Phong) && kd != null) {
+        } else if (kd != null) {
             s.append(", kd = ").append(Fmt.vec(kd));
         }
         if (shader instanceof Phong && ks != null && p != null) {
@@ -83,7 +82,7 @@ final class ShadingReport {
                 : "L = Σ over lights of kd ⊙ I · max(0, n·l) / r²") + ", without the lights whose shadow ray is blocked");
         out.println(Fmt.row(in, "n", Fmt.vec(hit.normal) + "   (the hit's unit normal)"));
         out.println(Fmt.row(in, "e", Fmt.vec(ray.direction.normalized().negate()) + "   (unit vector toward the eye)"));
-        Texture texture = ((DirectLighting) shader).getTexture();
+        Texture texture = ShaderParameters.texture(shader);
         if (texture != null) {
             TextureReport.explain(texture, hit, in, out);
         }
