@@ -18,8 +18,8 @@ final class TextureReport {
     private TextureReport() {
     }
 
-    /** Prints the lookup and returns the color the texture gives at the hit (kd). */
-    static Vec3 explain(Texture texture, IntersectionRecord hit, String in, PrintWriter out) {
+    /** Prints the lookup: the hit's (u, v), the texel they pick and the kd the texture gives there. */
+    static void explain(Texture texture, IntersectionRecord hit, String in, PrintWriter out) {
         Image image = texture.getImage();
         int w = image.width();
         int h = image.height();
@@ -52,7 +52,6 @@ final class TextureReport {
                     + " brought into the " + w + "×" + h + " image (" + where + "): a RepeatTexture wraps it, a ClampTexture clamps it"));
         }
         out.println(Fmt.row(in, "kd", Fmt.vec(kd) + "   (" + texture.getClass().getSimpleName() + ".getTexColor(u, v))"));
-        return kd;
     }
 
     /** A texel's 8-bit color: texels are the file's values / 255, so this is exact. */

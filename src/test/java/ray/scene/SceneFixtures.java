@@ -6,6 +6,7 @@ import static org.junit.Assert.assertThrows;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Set;
@@ -28,10 +29,15 @@ final class SceneFixtures {
 
     /** Writes {@code text} (UTF-8) to {@code relativePath} under the folder, creating subfolders. */
     static Path write(TemporaryFolder folder, String relativePath, String text) {
+        return write(folder, relativePath, text.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /** Writes {@code bytes} to {@code relativePath} under the folder, creating subfolders. */
+    static Path write(TemporaryFolder folder, String relativePath, byte[] bytes) {
         try {
             Path file = folder.getRoot().toPath().resolve(relativePath);
             Files.createDirectories(file.getParent());
-            Files.writeString(file, text);
+            Files.write(file, bytes);
             return file;
         } catch (IOException e) {
             throw new UncheckedIOException(e);

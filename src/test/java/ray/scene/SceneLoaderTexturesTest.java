@@ -67,17 +67,6 @@ public class SceneLoaderTexturesTest {
         }
     }
 
-    private Path writeBytes(String relativePath, byte[] bytes) {
-        try {
-            Path file = root().resolve(relativePath);
-            Files.createDirectories(file.getParent());
-            Files.write(file, bytes);
-            return file;
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
     /** scenes/scene.xml: a named texture of {@code image} (line 5 holds its {@code <image>}, column 12) and a sphere using it. */
     private Path sceneWithTexture(String image) {
         return SceneFixtures.write(folder, "scenes/scene.xml", "<scene>\n" + SceneFixtures.CAMERA_AND_IMAGE
@@ -162,7 +151,7 @@ public class SceneLoaderTexturesTest {
 
     @Test
     public void folderIsNotAnImage() {
-        writeBytes("textures/dir.png/inside", new byte[1]);
+        SceneFixtures.write(folder, "textures/dir.png/inside", new byte[1]);
         assertImageError("../textures/dir.png", "image path " + root().resolve("textures/dir.png") + " is not a regular file; " + FORMATS);
     }
 
@@ -175,9 +164,9 @@ public class SceneLoaderTexturesTest {
 
     @Test
     public void emptyOrTextFileIsNotAnImage() {
-        writeBytes("textures/empty.png", new byte[0]);
+        SceneFixtures.write(folder, "textures/empty.png", new byte[0]);
         assertImageError("../textures/empty.png", "image file " + root().resolve("textures/empty.png") + " is empty; " + FORMATS);
-        writeBytes("textures/text.png", "hello".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+        SceneFixtures.write(folder, "textures/text.png", "hello");
         assertImageError("../textures/text.png", "image file " + root().resolve("textures/text.png")
                 + " is not an image this program can read; " + FORMATS);
     }
@@ -186,7 +175,7 @@ public class SceneLoaderTexturesTest {
     public void truncatedPngIsDamaged() throws IOException {
         Path whole = writeDistinctPng("textures/whole.png");
         byte[] bytes = Files.readAllBytes(whole);
-        Path cut = writeBytes("textures/cut.png", Arrays.copyOf(bytes, 40));
+        Path cut = SceneFixtures.write(folder, "textures/cut.png", Arrays.copyOf(bytes, 40));
         Path scene = sceneWithTexture("../textures/cut.png");
         String message = SceneFixtures.loadError(scene).getMessage();
         assertTrue(message, message.startsWith(scene + ":5:12: image file " + cut + " is damaged or unreadable ("));
