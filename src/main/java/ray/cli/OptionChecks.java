@@ -20,6 +20,16 @@ final class OptionChecks {
         }
     }
 
+    /** The value of {@code --accel}: {@code bvh} or {@code none}. */
+    static ray.accel.Acceleration acceleration(CommandLine cl, String option, String value) {
+        for (ray.accel.Acceleration mode : ray.accel.Acceleration.values()) {
+            if (mode.option().equals(value)) {
+                return mode;
+            }
+        }
+        throw new CommandLine.ParameterException(cl, option + " must be bvh or none, got '" + value + "'");
+    }
+
     /** An optional samples-per-pixel count: between 1 and {@link Limits#MAX_SAMPLES}. */
     static void samples(CommandLine cl, String option, Integer value) {
         atLeastOne(cl, option, value);

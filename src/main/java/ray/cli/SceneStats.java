@@ -23,7 +23,14 @@ final class SceneStats {
     List<String> effects;
     List<String> skipped;
     Map<String, Long> rays;
+    /** "bvh" or "none": how the framework's searches ran. */
+    String acceleration;
+    /** Ray–primitive intersection tests as counted, in all and per kind of ray. */
     long intersectionTests;
+    Map<String, Long> intersectionTestsByRay;
+    /** Bounding boxes tested (BVH nodes visited, placed groups' boxes), in all and per kind of ray. */
+    long boxTests;
+    Map<String, Long> boxTestsByRay;
     long specularEvaluations;
     long textureLookups;
     /** The plan line, printed under the summary; not in the JSON (effects and skipped hold it). */
@@ -41,7 +48,11 @@ final class SceneStats {
         s.effects = result.plan.effects();
         s.skipped = result.plan.skipped();
         s.rays = result.rays.byKind();
-        s.intersectionTests = result.rays.intersectionTests;
+        s.acceleration = result.plan.acceleration().option();
+        s.intersectionTests = result.rays.totalIntersectionTests();
+        s.intersectionTestsByRay = result.rays.byKind(result.rays.intersectionTests);
+        s.boxTests = result.rays.totalBoxTests();
+        s.boxTestsByRay = result.rays.byKind(result.rays.boxTests);
         s.specularEvaluations = result.rays.specular;
         s.textureLookups = result.rays.textureLookups;
         s.planLine = result.plan.describe();

@@ -5,6 +5,8 @@ import java.util.Map;
 import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.accel.SearchCounter;
+import ray.accel.SearchTree;
 import ray.math.Vec3;
 import ray.shading.Effect;
 import ray.shading.Shader;
@@ -17,28 +19,31 @@ import ray.shading.Shader;
  * does none of its work. Not shared between threads.
  */
 final class CountingTracer extends SceneTracer {
-    private final long primitives;
+    private final SearchCounter counter;
     private final RayStats stats = new RayStats();
     /** The effects of each shader met so far, its parts' included. */
     private final Map<Shader, Set<Effect>> effects = new IdentityHashMap<>();
 
     CountingTracer(RenderPlan plan) {
-        super(plan.scene(), plan.offsets());
-        this.primitives = plan.primitives();
+        this(plan, new SearchCounter());
     }
 
-    /**
-     * The counts so far. Intersection tests are not counted per ray: the linear closest-hit loop
-     * tests every ray against each of the plan's primitives, so they are exactly rays × primitives.
-     */
+    private CountingTracer(RenderPlan plan, SearchCounter counter) {
+        super(plan.scene(), plan.offsets(), SearchTree.of(plan.scene().getSurfaces(), plan.acceleration(), counter),
+                plan.acceleration());
+        this.counter = counter;
+    }
+
+    /** The counts so far: rays and shading work counted here, intersection tests and boxes where they were made. */
     RayStats stats() {
-        stats.intersectionTests = stats.total() * primitives;
+        stats.countedSearches(counter);
         return stats;
     }
 
     /** The radiance a camera ray sees. */
     Vec3 cameraRadiance(Ray ray) {
         stats.camera++;
+        counter.searchingFor(SearchCounter.CAMERA);
         return radiance(ray, 0);
     }
 
@@ -62,12 +67,14 @@ final class CountingTracer extends SceneTracer {
     @Override
     public boolean unoccluded(IntersectionRecord hit, Vec3 lightPosition) {
         stats.shadow++;
+        counter.searchingFor(SearchCounter.SHADOW);
         return super.unoccluded(hit, lightPosition);
     }
 
     @Override
     public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
         stats.reflection++;
+        counter.searchingFor(SearchCounter.REFLECTION);
         return super.radiance(hit, direction, depth);
     }
 }

@@ -2,6 +2,7 @@ package ray.render;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
+import ray.accel.SearchCounter;
 
 /**
  * How many rays of each kind a render traced, and the work they caused. Each thread counts its own;
@@ -16,12 +17,39 @@ public final class RayStats {
     /** Texture lookups: one per hit of a textured shader (a glaze's substrate too), when the scene has a light. */
     public long textureLookups;
     /**
-     * Ray–primitive intersection tests: (rays traced) × (primitives in the scene tree), summed over
-     * the ray kinds. Exact for the linear closest-hit loop of Group, which tests every ray against
-     * every primitive; a loop that skipped primitives (a bounding volume hierarchy) would need a
-     * real counter instead.
+     * Ray–primitive intersection tests, counted as they are made (calls of a sphere's, triangle's or
+     * cylinder's {@code intersect}), per kind of ray in {@link SearchCounter} order (camera, shadow,
+     * reflection).
      */
-    public long intersectionTests;
+    public final long[] intersectionTests = new long[SearchCounter.KINDS];
+    /** Bounding boxes tested (BVH nodes visited, and the boxes of placed groups), per kind of ray. */
+    public final long[] boxTests = new long[SearchCounter.KINDS];
+
+    /** Takes the search counts of one thread (replacing what was taken from it before). */
+    void countedSearches(SearchCounter counter) {
+        for (int kind = 0; kind < SearchCounter.KINDS; kind++) {
+            intersectionTests[kind] = counter.tests(kind);
+            boxTests[kind] = counter.boxes(kind);
+        }
+    }
+
+    /** Intersection tests of every kind of ray. */
+    public long totalIntersectionTests() {
+        return sum(intersectionTests);
+    }
+
+    /** Box tests of every kind of ray. */
+    public long totalBoxTests() {
+        return sum(boxTests);
+    }
+
+    private static long sum(long[] counts) {
+        long total = 0;
+        for (long c : counts) {
+            total += c;
+        }
+        return total;
+    }
 
     public void add(RayStats other) {
         camera += other.camera;
@@ -29,7 +57,10 @@ public final class RayStats {
         reflection += other.reflection;
         specular += other.specular;
         textureLookups += other.textureLookups;
-        intersectionTests += other.intersectionTests;
+        for (int kind = 0; kind < SearchCounter.KINDS; kind++) {
+            intersectionTests[kind] += other.intersectionTests[kind];
+            boxTests[kind] += other.boxTests[kind];
+        }
     }
 
     public long total() {
@@ -38,10 +69,15 @@ public final class RayStats {
 
     /** The ray counts by kind, in a fixed order, for printing and JSON. */
     public Map<String, Long> byKind() {
+        return byKind(new long[] {camera, shadow, reflection});
+    }
+
+    /** Counts per kind of ray (in {@link SearchCounter} order) by the kind's name: camera, shadow, reflection. */
+    public Map<String, Long> byKind(long[] counts) {
         Map<String, Long> m = new LinkedHashMap<>();
-        m.put("camera", camera);
-        m.put("shadow", shadow);
-        m.put("reflection", reflection);
+        m.put("camera", counts[SearchCounter.CAMERA]);
+        m.put("shadow", counts[SearchCounter.SHADOW]);
+        m.put("reflection", counts[SearchCounter.REFLECTION]);
         return m;
     }
 }

@@ -7,6 +7,7 @@ import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import ray.accel.Acceleration;
 import ray.scene.Scene;
 import ray.shading.Effect;
 import ray.shading.Glazed;
@@ -30,6 +31,8 @@ public final class RenderPlan {
     private final RayOffsets offsets;
     /** The pixels rendered: the whole image unless a window of it is asked for. */
     private final PixelWindow window;
+    /** How the framework's searches run: {@link Acceleration#BVH} unless {@code --accel none} asks otherwise. */
+    private final Acceleration acceleration;
     /** What each running effect counts (lights, shaders, groups, triangles, grid side), in Effect order. */
     private final Map<Effect, String> running = new EnumMap<>(Effect.class);
 
@@ -39,6 +42,7 @@ public final class RenderPlan {
         this.pattern = pattern;
         this.offsets = RayOffsets.SCALED;
         this.window = PixelWindow.whole(scene.getWidth(), scene.getHeight());
+        this.acceleration = Acceleration.BVH;
         Walk walk = new Walk();
         walk.surface(scene.getSurfaces());
         this.primitives = walk.primitives;
@@ -67,6 +71,10 @@ public final class RenderPlan {
         if (walk.count(Effect.VERTEX_NORMALS) > 0) {
             running.put(Effect.VERTEX_NORMALS, count(walk.count(Effect.VERTEX_NORMALS), "triangle"));
         }
+        if (walk.count(Effect.ACCELERATION) > 0) {
+            running.put(Effect.ACCELERATION, count(walk.count(Effect.ACCELERATION), "mesh", "meshes")
+                    + ", " + count(walk.treeTriangles, "triangle"));
+        }
     }
 
     /** The plan for the scene as written, with its own {@code <samples>} on the regular grid. */
@@ -88,7 +96,7 @@ public final class RenderPlan {
     }
 
     /** A copy of {@code plan} with other offsets or window; the effects stay those of the scene. */
-    private RenderPlan(RenderPlan plan, RayOffsets offsets, PixelWindow window) {
+    private RenderPlan(RenderPlan plan, RayOffsets offsets, PixelWindow window, Acceleration acceleration) {
         this.scene = plan.scene;
         this.gridSide = plan.gridSide;
         this.pattern = plan.pattern;
@@ -96,11 +104,27 @@ public final class RenderPlan {
         this.running.putAll(plan.running);
         this.offsets = offsets;
         this.window = window;
+        this.acceleration = acceleration;
+        if (acceleration == Acceleration.NONE) {
+            running.remove(Effect.ACCELERATION);
+        }
     }
 
     /** This plan with secondary rays started by {@code rule} (for comparing the rules; renders use SCALED). */
     public RenderPlan withOffsets(RayOffsets rule) {
-        return new RenderPlan(this, rule, window);
+        return new RenderPlan(this, rule, window, acceleration);
+    }
+
+    /**
+     * This plan with the framework's searches run as {@code mode} says: {@link Acceleration#NONE}
+     * renders the same image by plain linear loops (and drops the bvh effect).
+     */
+    public RenderPlan withAcceleration(Acceleration mode) {
+        return new RenderPlan(this, offsets, window, mode);
+    }
+
+    public Acceleration acceleration() {
+        return acceleration;
     }
 
     /**
@@ -113,7 +137,7 @@ public final class RenderPlan {
             throw new IllegalArgumentException("the window " + part + " does not fit in the " + scene.getWidth() + "x"
                     + scene.getHeight() + " image");
         }
-        return new RenderPlan(this, offsets, part);
+        return new RenderPlan(this, offsets, part, acceleration);
     }
 
     public Scene scene() {
@@ -182,7 +206,12 @@ public final class RenderPlan {
     }
 
     private static String count(long n, String noun) {
-        return n + " " + noun + (n == 1 ? "" : "s");
+        return count(n, noun, noun + "s");
+    }
+
+    /** n and the noun, with thousands separated by commas (86,528 triangles). */
+    private static String count(long n, String noun, String plural) {
+        return String.format(java.util.Locale.ROOT, "%,d %s", n, n == 1 ? noun : plural);
     }
 
     /**
@@ -193,6 +222,8 @@ public final class RenderPlan {
         final Set<Shader> shaders = Collections.newSetFromMap(new IdentityHashMap<>());
         final Map<Effect, Long> counts = new EnumMap<>(Effect.class);
         long primitives;
+        /** Triangles in the meshes and boxes searched through a hierarchy. */
+        long treeTriangles;
 
         long count(Effect effect) {
             return counts.getOrDefault(effect, 0L);
@@ -200,6 +231,9 @@ public final class RenderPlan {
 
         void surface(Surface s) {
             note(s.effects());
+            if (s.effects().contains(Effect.ACCELERATION)) {
+                treeTriangles += s.children().size();
+            }
             List<Surface> children = s.children();
             if (children.isEmpty()) {
                 // An empty group tests nothing; every other leaf is one primitive.

@@ -3,6 +3,7 @@ package ray.render;
 import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.accel.Acceleration;
 import ray.math.Vec3;
 import ray.scene.Scene;
 import ray.shading.Light;
@@ -23,6 +24,8 @@ public class SceneTracer implements Tracer {
     private final Scene scene;
     private final Surface surfaces;
     private final RayOffsets offsets;
+    /** Whether shadow rays ask "anything in the way?" (stopping at the first blocker) or search for the closest hit. */
+    private final boolean anyHitShadows;
     /** Scratch record for shadow tests, whose hit is never read. */
     private final IntersectionRecord shadowHit = new IntersectionRecord();
     private IntersectionRecord lastHit;
@@ -34,9 +37,18 @@ public class SceneTracer implements Tracer {
     }
 
     public SceneTracer(Scene scene, RayOffsets offsets) {
+        this(scene, offsets, scene.getSurfaces(), Acceleration.BVH);
+    }
+
+    /**
+     * A tracer that searches {@code surfaces} (the scene's, or a {@link ray.accel.SearchTree} made
+     * of them), with shadow rays as {@code acceleration} says.
+     */
+    protected SceneTracer(Scene scene, RayOffsets offsets, Surface surfaces, Acceleration acceleration) {
         this.scene = scene;
-        this.surfaces = scene.getSurfaces();
+        this.surfaces = surfaces;
         this.offsets = offsets;
+        this.anyHitShadows = acceleration == Acceleration.BVH;
     }
 
     public Scene scene() {
@@ -64,7 +76,8 @@ public class SceneTracer implements Tracer {
 
     @Override
     public boolean unoccluded(IntersectionRecord hit, Vec3 lightPosition) {
-        return !surfaces.intersect(shadowHit, shadowRay(hit, lightPosition));
+        Ray shadowRay = shadowRay(hit, lightPosition);
+        return anyHitShadows ? !surfaces.intersectsAny(shadowRay) : !surfaces.intersect(shadowHit, shadowRay);
     }
 
     @Override

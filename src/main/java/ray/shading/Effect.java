@@ -21,7 +21,12 @@ public enum Effect {
     /** Rays taken into a placed surface's own coordinates. */
     TRANSFORMS("transforms"),
     /** The barycentric blend of a triangle's vertex normals. */
-    VERTEX_NORMALS("vertex normals");
+    VERTEX_NORMALS("vertex normals"),
+    /**
+     * A bounding volume hierarchy searched inside a mesh or box of enough triangles, so that a ray
+     * tests a few of them rather than all (the image is the same without it: {@code --accel none}).
+     */
+    ACCELERATION("bvh");
 
     public final String label;
 

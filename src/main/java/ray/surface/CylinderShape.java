@@ -1,6 +1,7 @@
 package ray.surface;
 
 import ray.IntersectionRecord;
+import ray.math.Bounds;
 import ray.math.Vec3;
 
 /**
@@ -67,6 +68,14 @@ public abstract class CylinderShape extends Surface {
         }
         Vec3 point = new Vec3(center.x + radius * radial.x, p.y, center.z + radius * radial.z);
         return new HitGeometry(p, point, normal, scale);
+    }
+
+    /** From the bottom cap's square to the top cap's. */
+    @Override
+    public Bounds bounds() {
+        double r = Math.abs(radius);
+        return new Bounds(center.x - r, Math.min(center.y, center.y + height), center.z - r,
+                center.x + r, Math.max(center.y, center.y + height), center.z + r);
     }
 
     @Override

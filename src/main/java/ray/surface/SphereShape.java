@@ -1,6 +1,7 @@
 package ray.surface;
 
 import ray.IntersectionRecord;
+import ray.math.Bounds;
 import ray.math.Vec3;
 
 /**
@@ -48,6 +49,12 @@ public abstract class SphereShape extends Surface {
         }
         Vec3 normal = Math.abs(reported.dot(outward)) > 0.5 ? reported : outward;
         return new HitGeometry(p, center.plusScaled(radius, outward), normal, center.maxAbs() + radius);
+    }
+
+    /** The cube about the center with half-side |radius|. */
+    @Override
+    public Bounds bounds() {
+        return Bounds.around(center, radius);
     }
 
     @Override

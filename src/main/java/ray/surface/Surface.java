@@ -5,6 +5,7 @@ import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Affine;
+import ray.math.Bounds;
 import ray.shading.Effect;
 import ray.shading.Shader;
 
@@ -26,6 +27,43 @@ public abstract class Surface {
      * @return whether the ray hits this surface for some t in (ray.start, ray.end)
      */
     public abstract boolean intersect(IntersectionRecord out, Ray ray);
+
+    /**
+     * Whether the ray hits this surface for any t in (ray.start, ray.end): the question a shadow ray
+     * asks, which any hit answers, so a search may stop at the first it finds. A surface made of
+     * parts asks its parts (a {@link Group}'s, whatever order its own loop takes: any hit is as good
+     * as the closest); a primitive runs its {@link #intersect} into a record nobody reads.
+     */
+    public boolean intersectsAny(Ray ray) {
+        List<Surface> parts = children();
+        if (parts.isEmpty()) {
+            return intersect(new IntersectionRecord(), ray);
+        }
+        for (Surface part : parts) {
+            if (part.intersectsAny(ray)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * A box that holds every point where this surface can be hit, in the coordinates of whoever
+     * holds it: its parts' boxes joined and mapped by {@link #childPlacement()}, or
+     * {@link Bounds#EVERYTHING} for a primitive that does not say (so that it is never skipped).
+     * Computed when asked; a surface that tests it per ray keeps it.
+     */
+    public Bounds bounds() {
+        List<Surface> parts = children();
+        if (parts.isEmpty()) {
+            return Bounds.EVERYTHING;
+        }
+        Bounds box = Bounds.EMPTY;
+        for (Surface part : parts) {
+            box = box.union(part.bounds());
+        }
+        return box.transformed(childPlacement());
+    }
 
     /** This surface's shader; null until the scene gives it one (a surface without one takes its group's). */
     public Shader getShader() {

@@ -4,7 +4,9 @@ import java.util.List;
 import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.accel.SearchCounter;
 import ray.math.Affine;
+import ray.math.Bounds;
 import ray.shading.Effect;
 import ray.shading.Shader;
 
@@ -18,11 +20,35 @@ public final class Transformed extends Surface {
     private final Surface surface;
     private final Affine toWorld;
     private final Affine toLocal;
+    /** Whether rays are tested against the placed surface's box before they are mapped into it. */
+    private final boolean testBounds;
+    /** Counts the box tests, in a renderer's counting copy of the scene; null otherwise. */
+    private final SearchCounter counter;
+    /** The placed surface's box in this surface's coordinates, made when first asked. */
+    private Bounds worldBounds;
 
     public Transformed(Surface surface, Affine toWorld) {
+        this(surface, toWorld, toWorld.inverse(), true, null);
+    }
+
+    private Transformed(Surface surface, Affine toWorld, Affine toLocal, boolean testBounds, SearchCounter counter) {
         this.surface = surface;
         this.toWorld = toWorld;
-        this.toLocal = toWorld.inverse();
+        this.toLocal = toLocal;
+        this.testBounds = testBounds;
+        this.counter = counter;
+    }
+
+    /**
+     * The same placement of another surface (a counting copy of this one's), testing its box first
+     * or not, and counting those tests into {@code counter} (may be null).
+     */
+    public Transformed placing(Surface other, boolean testBounds, SearchCounter counter) {
+        return new Transformed(other, toWorld, toLocal, testBounds, counter);
+    }
+
+    public Surface placed() {
+        return surface;
     }
 
     public Affine toWorld() {
@@ -40,9 +66,38 @@ public final class Transformed extends Surface {
     }
 
     @Override
+    public Bounds bounds() {
+        Bounds made = worldBounds;
+        if (made == null) {
+            made = surface.bounds().transformed(toWorld);
+            worldBounds = made; // immutable, so a race only computes it twice
+        }
+        return made;
+    }
+
+    /** Whether the ray may reach the placed surface at all (always, when boxes are not tested). */
+    private boolean mayHit(Ray ray) {
+        if (!testBounds) {
+            return true;
+        }
+        if (counter != null) {
+            counter.count(0, 1);
+        }
+        return bounds().mayHit(ray.origin, ray.direction, ray.start, ray.end);
+    }
+
+    private Ray toLocal(Ray ray) {
+        return new Ray(toLocal.applyToPoint(ray.origin), toLocal.applyToVector(ray.direction), ray.start, ray.end);
+    }
+
+    @Override
+    public boolean intersectsAny(Ray ray) {
+        return mayHit(ray) && surface.intersectsAny(toLocal(ray));
+    }
+
+    @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
-        Ray local = new Ray(toLocal.applyToPoint(ray.origin), toLocal.applyToVector(ray.direction), ray.start, ray.end);
-        if (!surface.intersect(out, local)) {
+        if (!mayHit(ray) || !surface.intersect(out, toLocal(ray))) {
             return false;
         }
         out.location = toWorld.applyToPoint(out.location);

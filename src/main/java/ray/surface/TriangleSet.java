@@ -3,21 +3,36 @@ package ray.surface;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.accel.Bvh;
+import ray.accel.BvhBuilder;
+import ray.accel.SearchCounter;
+import ray.math.Bounds;
+import ray.shading.Effect;
 
 /**
  * A surface made of triangles that it builds itself ({@link Box}, {@link Mesh}), hit by the
- * closest of them: the framework's own closest-hit loop, so a box or mesh needs the student's
- * {@link Triangle} but not their {@link Group}. Ties keep the earlier triangle, as in a group.
+ * closest of them: the framework's own search, so a box or mesh needs the student's
+ * {@link Triangle} but not their {@link Group}. A set of {@link #LINEAR_BELOW} triangles or more
+ * is searched through a bounding volume hierarchy ({@link Bvh}) built when the set is; a smaller one
+ * by its box and then a loop over every triangle, which costs less than a tree would save. Either
+ * way the hit is the one the plain loop in file order finds, ties in t keeping the earlier triangle
+ * ({@link #closestHitLinear} is that loop, for rendering without acceleration).
  */
 public abstract class TriangleSet extends Surface {
-    private final List<Triangle> triangles = new ArrayList<>();
+    /** Sets smaller than this keep a single leaf: their box, then every triangle. */
+    public static final int LINEAR_BELOW = 8;
 
-    /** Replaces the triangles (by complete(), once the properties are known). */
+    private final List<Triangle> triangles = new ArrayList<>();
+    private Bvh bvh;
+
+    /** Replaces the triangles (by complete(), once the properties are known) and builds their hierarchy. */
     protected void setTriangles(List<Triangle> built) {
         triangles.clear();
         triangles.addAll(built);
+        bvh = BvhBuilder.build(triangles, hasTree());
     }
 
     @Override
@@ -25,8 +40,60 @@ public abstract class TriangleSet extends Surface {
         return Collections.unmodifiableList(triangles);
     }
 
+    public int triangleCount() {
+        return triangles.size();
+    }
+
+    /** Whether the set is searched through a tree (rather than its box and then every triangle). */
+    public boolean hasTree() {
+        return triangles.size() >= LINEAR_BELOW;
+    }
+
+    /** The hierarchy's node count (1 for a set searched by its box alone, 0 before the triangles are built). */
+    public int treeNodes() {
+        return bvh == null ? 0 : bvh.nodeCount();
+    }
+
+    /** A set big enough for its hierarchy calls for acceleration (and the plan says so). */
+    @Override
+    public Set<Effect> effects() {
+        return hasTree() ? Set.of(Effect.ACCELERATION) : Set.of();
+    }
+
+    @Override
+    public Bounds bounds() {
+        Bounds box = Bounds.EMPTY;
+        for (Triangle triangle : triangles) {
+            box = box.union(triangle.bounds());
+        }
+        return box;
+    }
+
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
+        return closestHit(out, ray, null);
+    }
+
+    @Override
+    public boolean intersectsAny(Ray ray) {
+        return anyHit(ray, null);
+    }
+
+    /** The closest hit through the hierarchy, counting the tests and boxes into {@code counter} (may be null). */
+    public boolean closestHit(IntersectionRecord out, Ray ray, SearchCounter counter) {
+        return bvh != null && bvh.closestHit(out, ray, counter);
+    }
+
+    /** Whether any triangle is hit, through the hierarchy, stopping at the first. */
+    public boolean anyHit(Ray ray, SearchCounter counter) {
+        return bvh != null && bvh.anyHit(ray, counter);
+    }
+
+    /**
+     * The closest hit by the plain loop over every triangle in file order, each hit shortening the
+     * ray (what {@link Group} does, and what the hierarchy's answer is proven against).
+     */
+    public boolean closestHitLinear(IntersectionRecord out, Ray ray, SearchCounter counter) {
         Ray closestSoFar = ray.copy();
         boolean hitAny = false;
         for (Triangle triangle : triangles) {
@@ -34,6 +101,9 @@ public abstract class TriangleSet extends Surface {
                 closestSoFar.end = out.t;
                 hitAny = true;
             }
+        }
+        if (counter != null) {
+            counter.count(triangles.size(), 0);
         }
         return hitAny;
     }

@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.Set;
 import ray.IntersectionRecord;
+import ray.math.Bounds;
 import ray.math.Vec3;
 import ray.shading.Effect;
 
@@ -169,6 +170,11 @@ public abstract class TriangleShape extends Surface {
         thinness = thinness <= HitGeometry.MAX_THINNESS ? thinness : HitGeometry.MAX_THINNESS;
         // p − ((p − v0)·n) n: the hit on the triangle's plane, wherever the ray that found it came from.
         return new HitGeometry(p, p.plusScaled(-p.minus(v0).dot(n), n), n, coordinates * thinness);
+    }
+
+    @Override
+    public Bounds bounds() {
+        return Bounds.of(v0, v1, v2);
     }
 
     @Override

@@ -1,0 +1,172 @@
+package ray.accel;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.surface.Surface;
+
+/**
+ * A bounding volume hierarchy over a fixed list of primitives, in flat arrays: node k's box is
+ * {@code boxes[6k .. 6k+5]} (min x, y, z, max x, y, z, as floats rounded outward and padded as
+ * {@link ray.math.Bounds} pads), and {@code links[2k], links[2k+1]} are either (first primitive,
+ * −count) for a leaf or (second child, split axis) for an inner node, whose first child is k + 1.
+ * Built by {@link BvhBuilder}.
+ *
+ * <p>Searches visit the child on the ray's near side first and shorten the ray at each hit, so
+ * boxes beyond the closest hit so far are skipped. The leaves call each primitive's own
+ * {@code intersect}: with triangles, the student's {@code Triangle.intersect} is still what hits.
+ * The closest hit is the one a linear loop in file order finds, ties in t included (the earlier
+ * primitive wins): see {@link #closestHit}.
+ */
+public final class Bvh {
+    /** Deep enough for any tree the builder makes (it stops splitting at this depth). */
+    static final int MAX_DEPTH = 64;
+
+    final Surface[] items;
+    /** The position of each of {@link #items} in the file order, for breaking ties as a linear loop does. */
+    final int[] fileIndex;
+    final float[] boxes;
+    final int[] links;
+
+    Bvh(Surface[] items, int[] fileIndex, float[] boxes, int[] links) {
+        this.items = items;
+        this.fileIndex = fileIndex;
+        this.boxes = boxes;
+        this.links = links;
+    }
+
+    public int nodeCount() {
+        return links.length / 2;
+    }
+
+    public int primitiveCount() {
+        return items.length;
+    }
+
+    /**
+     * Finds the closest hit of the ray for t in (ray.start, ray.end), into {@code out}, as the
+     * linear loop over the primitives in file order does (each hit shortens the ray to end at it,
+     * so the earlier of two hits at the same t wins). Out of order, a primitive earlier in the file
+     * than the best so far is tested with the ray ending just past the best t (at the next double),
+     * which admits a tie and nothing farther.
+     */
+    public boolean closestHit(IntersectionRecord out, Ray ray, SearchCounter counter) {
+        Ray closestSoFar = ray.copy();
+        double bestT = ray.end;
+        int best = Integer.MAX_VALUE;
+        double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
+        double invX = 1 / ray.direction.x, invY = 1 / ray.direction.y, invZ = 1 / ray.direction.z;
+        boolean[] negative = {invX < 0, invY < 0, invZ < 0};
+        int[] stack = new int[MAX_DEPTH];
+        int top = 0;
+        int node = 0;
+        long tests = 0;
+        long visited = 0;
+        while (true) {
+            visited++;
+            if (mayHit(node, ox, oy, oz, invX, invY, invZ, ray.start, bestT)) {
+                int a = links[2 * node];
+                int b = links[2 * node + 1];
+                if (b >= 0) {
+                    // Inner node: the near child now, the far one later.
+                    if (negative[b]) {
+                        stack[top++] = node + 1;
+                        node = a;
+                    } else {
+                        stack[top++] = a;
+                        node = node + 1;
+                    }
+                    continue;
+                }
+                for (int i = a; i < a - b; i++) {
+                    tests++;
+                    boolean earlier = fileIndex[i] < best;
+                    closestSoFar.end = earlier && best != Integer.MAX_VALUE ? Math.nextUp(bestT) : bestT;
+                    if (items[i].intersect(out, closestSoFar)) {
+                        bestT = out.t;
+                        best = fileIndex[i];
+                    }
+                }
+            }
+            if (top == 0) {
+                break;
+            }
+            node = stack[--top];
+        }
+        if (counter != null) {
+            counter.count(tests, visited);
+        }
+        return best != Integer.MAX_VALUE;
+    }
+
+    /** Whether any primitive is hit for t in (ray.start, ray.end); stops at the first hit found. */
+    public boolean anyHit(Ray ray, SearchCounter counter) {
+        IntersectionRecord scratch = new IntersectionRecord();
+        double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
+        double invX = 1 / ray.direction.x, invY = 1 / ray.direction.y, invZ = 1 / ray.direction.z;
+        int[] stack = new int[MAX_DEPTH];
+        int top = 0;
+        int node = 0;
+        long tests = 0;
+        long visited = 0;
+        boolean hit = false;
+        search:
+        while (true) {
+            visited++;
+            if (mayHit(node, ox, oy, oz, invX, invY, invZ, ray.start, ray.end)) {
+                int a = links[2 * node];
+                int b = links[2 * node + 1];
+                if (b >= 0) {
+                    stack[top++] = a;
+                    node = node + 1;
+                    continue;
+                }
+                for (int i = a; i < a - b; i++) {
+                    tests++;
+                    if (items[i].intersect(scratch, ray)) {
+                        hit = true;
+                        break search;
+                    }
+                }
+            }
+            if (top == 0) {
+                break;
+            }
+            node = stack[--top];
+        }
+        if (counter != null) {
+            counter.count(tests, visited);
+        }
+        return hit;
+    }
+
+    /**
+     * The slab test of {@link ray.math.Bounds#mayHit} on node k's box, which the builder has
+     * already padded; the t interval is widened here.
+     */
+    private boolean mayHit(int k, double ox, double oy, double oz, double invX, double invY, double invZ,
+            double start, double end) {
+        int o = 6 * k;
+        double near = start - ray.math.Bounds.PAD * Math.abs(start);
+        double far = end + ray.math.Bounds.PAD * Math.abs(end);
+        double t0 = (boxes[o] - ox) * invX;
+        double t1 = (boxes[o + 3] - ox) * invX;
+        // Written so that a NaN (a ray starting in a slab's plane, parallel to it) leaves near and far as they were.
+        double lo = Math.min(t0, t1);
+        double hi = Math.max(t0, t1);
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        t0 = (boxes[o + 1] - oy) * invY;
+        t1 = (boxes[o + 4] - oy) * invY;
+        lo = Math.min(t0, t1);
+        hi = Math.max(t0, t1);
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        t0 = (boxes[o + 2] - oz) * invZ;
+        t1 = (boxes[o + 5] - oz) * invZ;
+        lo = Math.min(t0, t1);
+        hi = Math.max(t0, t1);
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        return near <= far + ray.math.Bounds.PAD * Math.abs(far);
+    }
+}
