@@ -13,6 +13,7 @@ import java.util.TreeMap;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.stream.Collectors;
 import org.junit.Test;
+import ray.accel.Acceleration;
 import ray.image.Image;
 import ray.math.Vec3;
 import ray.shading.Effect;
@@ -26,6 +27,8 @@ import ray.shading.Phong;
 import ray.shading.RGBNormals;
 import ray.shading.Shader;
 import ray.shading.Texture;
+import ray.surface.Box;
+import ray.surface.Triangle;
 
 /**
  * The render plan proved by the counters: an effect the plan skips costs no ray and no evaluation
@@ -102,41 +105,92 @@ public class RenderPlanCountersTest {
     }
 
     @Test
-    public void intersectionTestsAreRaysTimesPrimitives() {
+    public void withoutAccelerationIntersectionTestsAreRaysTimesPrimitives() {
         Scene scene = floorScene(new Lambertian());
         // Two more triangles far off to the side: hit by nothing, tested by every ray.
         scene.addSurface(TestScenes.plane(-100, true, new Lambertian()));
         scene.addSurface(TestScenes.plane(-200, true, new Lambertian()));
         scene.addLight(new Light(v(0, 0, 3), Vec3.ONE));
         scene.complete();
-        RenderResult result = new Renderer(scene, 1, 2).render();
+        RenderResult result = new Renderer(RenderPlan.of(scene, 1).withAcceleration(Acceleration.NONE), 2).render();
         assertEquals(3, result.plan.primitives());
-        // 15 camera rays + 15 shadow rays, each tested against 3 triangles.
+        // 15 camera rays + 15 shadow rays, each tested against 3 triangles, and no box tested.
         assertEquals(15, result.rays.shadow);
-        assertEquals(90, result.rays.intersectionTests);
+        assertEquals(List.of(45L, 45L, 0L), counts(result.rays.intersectionTests));
+        assertEquals(0, result.rays.totalBoxTests());
+    }
+
+    /**
+     * The floor (first in the file), then a wall between it and the light (second; out of the
+     * orthographic camera's view), then a triangle far below. A shadow ray's search stops at the wall:
+     * 2 tests where the closest-hit search makes 3; camera rays test all 3 either way (the student's
+     * linear loop).
+     */
+    @Test
+    public void shadowRaysStopAtTheFirstBlocker() {
+        Scene scene = floorScene(new Lambertian());
+        Triangle wall = new Triangle(v(50, -40, -10), v(50, 40, -10), v(50, 0, 10));
+        wall.setShader(new Lambertian());
+        scene.addSurface(wall.complete());
+        scene.addSurface(TestScenes.plane(-100, true, new Lambertian()));
+        scene.addLight(new Light(v(100, 0, 3), Vec3.ONE));
+        scene.complete();
+        RenderResult fast = new Renderer(RenderPlan.of(scene, 1), 2).render();
+        RenderResult linear = new Renderer(RenderPlan.of(scene, 1).withAcceleration(Acceleration.NONE), 2).render();
+        assertEquals(15, fast.rays.shadow);
+        assertEquals(List.of(45L, 30L, 0L), counts(fast.rays.intersectionTests));
+        assertEquals(List.of(45L, 45L, 0L), counts(linear.rays.intersectionTests));
+        assertSameBits("any-hit vs closest-hit shadows", linear.image, fast.image);
+    }
+
+    /** A box of 12 triangles searched through its hierarchy: every box test and triangle test counted. */
+    @Test
+    public void aBoxCountsItsNodesAndTriangleTests() {
+        Scene scene = TestScenes.scene(TestScenes.orthographicDown(v(0, 0, 5), 5, 3), 5, 3);
+        Box box = new Box();
+        box.setMinPt(v(-10, -10, -1));
+        box.setMaxPt(v(10, 10, 0));
+        box.setShader(new Lambertian());
+        scene.addSurface(box.complete());
+        scene.complete();
+        RenderResult fast = new Renderer(RenderPlan.of(scene, 1), 1).render();
+        RenderResult linear = new Renderer(RenderPlan.of(scene, 1).withAcceleration(Acceleration.NONE), 1).render();
+        assertTrue(fast.plan.runs(Effect.ACCELERATION));
+        assertEquals("bvh(1 mesh, 12 triangles)", fast.plan.effects().get(fast.plan.effects().size() - 1));
+        assertEquals(List.of(15L * 12, 0L, 0L), counts(linear.rays.intersectionTests));
+        long tests = fast.rays.intersectionTests[0];
+        // Each ray straight down onto the top face enters at least the root and a leaf, and tests at
+        // least the top face's triangle that it hits, but far fewer than all 12.
+        assertTrue("tests " + tests, tests >= 15 && tests <= 15 * 6);
+        assertTrue("boxes " + fast.rays.boxTests[0], fast.rays.boxTests[0] >= 15 * 2);
+        assertSameBits("bvh vs linear", linear.image, fast.image);
+    }
+
+    private static List<Long> counts(long[] byKind) {
+        return java.util.Arrays.stream(byKind).boxed().collect(Collectors.toList());
     }
 
     /** The effects each shipped scene's file calls for (from its lights, shaders, samples, groups and meshes). */
     private static final Map<String, Set<Effect>> SHIPPED = new TreeMap<>(Map.ofEntries(
-            Map.entry("antialiased", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.ANTIALIASING, Effect.TRANSFORMS)),
-            Map.entry("glazed-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION, Effect.TRANSFORMS)),
-            Map.entry("group-transforms", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
-            Map.entry("mesh-flat", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS)),
-            Map.entry("mesh-smooth", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
+            Map.entry("antialiased", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.ANTIALIASING, Effect.TRANSFORMS)),
+            Map.entry("glazed-sphere", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION, Effect.TRANSFORMS)),
+            Map.entry("group-transforms", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
+            Map.entry("mesh-flat", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS)),
+            Map.entry("mesh-smooth", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
             Map.entry("one-sphere-phong", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("one-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS)),
-            Map.entry("rgb-normals", Set.of()),
-            Map.entry("two-boxes", Set.of(Effect.LIGHTING, Effect.SHADOWS)),
-            Map.entry("wire-box-ortho", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
-            Map.entry("wire-box", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
-            Map.entry("far-from-origin", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION, Effect.TRANSFORMS)),
+            Map.entry("rgb-normals", Set.of(Effect.ACCELERATION)),
+            Map.entry("two-boxes", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS)),
+            Map.entry("wire-box-ortho", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("wire-box", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("far-from-origin", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION, Effect.TRANSFORMS)),
             Map.entry("far-tiny-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("huge-ground-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
-            Map.entry("inside-closed-mesh", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.TRANSFORMS)),
-            Map.entry("cylinder", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS)),
+            Map.entry("inside-closed-mesh", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.TRANSFORMS)),
+            Map.entry("cylinder", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS)),
             Map.entry("globe", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES)),
             Map.entry("eclipse", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES)),
-            Map.entry("tablecloth", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES, Effect.TRANSFORMS,
+            Map.entry("tablecloth", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES, Effect.TRANSFORMS,
                     Effect.VERTEX_NORMALS)),
             Map.entry("diagnostic", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TEXTURES, Effect.TRANSFORMS))));
 
@@ -171,7 +225,12 @@ public class RenderPlanCountersTest {
             assertEquals(name, plan.runs(Effect.SPECULAR), result.rays.specular > 0);
             assertEquals(name, plan.runs(Effect.REFLECTION), result.rays.reflection > 0);
             assertEquals(name, plan.runs(Effect.TEXTURES), result.rays.textureLookups > 0);
-            assertEquals(name, result.rays.total() * plan.primitives(), result.rays.intersectionTests);
+            // Without acceleration the counted tests are exactly rays × primitives; with it, fewer or as many.
+            RenderResult linear = new Renderer(plan.withAcceleration(Acceleration.NONE), 2).render();
+            assertEquals(name, result.rays.total() * plan.primitives(), linear.rays.totalIntersectionTests());
+            assertEquals(name, 0, linear.rays.totalBoxTests());
+            assertTrue(name, result.rays.totalIntersectionTests() <= linear.rays.totalIntersectionTests());
+            assertEquals(name, plan.runs(Effect.ACCELERATION) || plan.runs(Effect.TRANSFORMS), result.rays.totalBoxTests() > 0);
         }
     }
 

@@ -50,13 +50,15 @@ public abstract class Surface {
     /**
      * A box that holds every point where this surface can be hit, in the coordinates of whoever
      * holds it: its parts' boxes joined and mapped by {@link #childPlacement()}, or
-     * {@link Bounds#EVERYTHING} for a primitive that does not say (so that it is never skipped).
+     * {@link Bounds#EVERYTHING} for a primitive that does not say (so that it is never skipped; the
+     * framework's spheres, triangles and cylinders say).
      * Computed when asked; a surface that tests it per ray keeps it.
      */
     public Bounds bounds() {
         List<Surface> parts = children();
         if (parts.isEmpty()) {
-            return Bounds.EVERYTHING;
+            // An empty group holds nothing; any other surface without parts is a primitive.
+            return this instanceof Group ? Bounds.EMPTY : Bounds.EVERYTHING;
         }
         Bounds box = Bounds.EMPTY;
         for (Surface part : parts) {
