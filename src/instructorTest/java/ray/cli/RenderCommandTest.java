@@ -1,5 +1,6 @@
 package ray.cli;
 
+import static org.junit.Assert.assertArrayEquals;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
@@ -40,7 +41,21 @@ public class RenderCommandTest {
 
     /** The plan line of the floor scene (one white Lambertian triangle, one light), at 1 sample. */
     private static final String FLOOR_PLAN = "effects: lighting(1 shader) shadows(1 light);"
-            + " skipped: specular, textures, reflection, antialiasing, transforms, vertex normals";
+            + " skipped: specular, textures, reflection, antialiasing, transforms, vertex normals, bvh";
+
+    @Test
+    public void accelNoneRendersTheSameImageAndABadValueIsRefused() throws Exception {
+        Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
+        Path linear = root.resolve("linear");
+        CliRun none = CliRun.of("render", "--accel", "none", "-o", linear.toString(), scene.toString());
+        CliRun bvh = CliRun.of("render", "-o", output.toString(), scene.toString());
+        assertEquals(none.toString(), 0, none.status);
+        assertEquals(bvh.toString(), 0, bvh.status);
+        assertArrayEquals(Files.readAllBytes(output.resolve("floor.png")), Files.readAllBytes(linear.resolve("floor.png")));
+        CliRun bad = CliRun.of("render", "--accel", "kd-tree", "-o", output.toString(), scene.toString());
+        assertEquals(bad.toString(), 2, bad.status);
+        assertTrue(bad.err, bad.err.startsWith("--accel must be bvh or none, got 'kd-tree'\n"));
+    }
 
     @Test
     public void renderingOneSceneWritesItsPngAndOneSummaryLine() throws Exception {
@@ -137,8 +152,14 @@ public class RenderCommandTest {
             assertEquals(samples[k] == 1 ? List.of("lighting(1 shader)", "shadows(1 light)")
                     : List.of("lighting(1 shader)", "shadows(1 light)", "antialiasing(2x2)"), effects);
             assertTrue(skipped.containsAll(List.of("specular", "reflection", "transforms", "vertex normals")));
-            // One triangle: every camera and shadow ray is one intersection test.
+            // One triangle: every camera and shadow ray is one intersection test, and no box is tested.
             assertEquals(32 * samples[k], s.get("intersectionTests").getAsLong());
+            JsonObject byRay = s.get("intersectionTestsByRay").getAsJsonObject();
+            assertEquals(16 * samples[k], byRay.get("camera").getAsLong());
+            assertEquals(16 * samples[k], byRay.get("shadow").getAsLong());
+            assertEquals(0, byRay.get("reflection").getAsLong());
+            assertEquals(0, s.get("boxTests").getAsLong());
+            assertEquals("bvh", s.get("acceleration").getAsString());
             assertEquals("Lambertian only", 0, s.get("specularEvaluations").getAsLong());
             assertEquals("no texture", 0, s.get("textureLookups").getAsLong());
         }

@@ -61,7 +61,7 @@ public class RenderPlanTest {
         assertFalse(plan.runs(Effect.LIGHTING));
         assertFalse(plan.runs(Effect.SHADOWS));
         assertEquals(List.of(), plan.effects());
-        assertEquals("effects: none; skipped: lighting, shadows, specular, textures, reflection, antialiasing, transforms, vertex normals",
+        assertEquals("effects: none; skipped: lighting, shadows, specular, textures, reflection, antialiasing, transforms, vertex normals, bvh",
                 plan.describe());
     }
 
@@ -186,8 +186,8 @@ public class RenderPlanTest {
         scene.addSurface(sphere(new Phong()));
         scene.complete();
         assertEquals("effects: lighting(1 shader) shadows(2 lights) specular(1 shader);"
-                + " skipped: textures, reflection, antialiasing, transforms, vertex normals", RenderPlan.of(scene).describe());
-        assertEquals(List.of("textures", "reflection", "antialiasing", "transforms", "vertex normals"), RenderPlan.of(scene).skipped());
+                + " skipped: textures, reflection, antialiasing, transforms, vertex normals, bvh", RenderPlan.of(scene).describe());
+        assertEquals(List.of("textures", "reflection", "antialiasing", "transforms", "vertex normals", "bvh"), RenderPlan.of(scene).skipped());
     }
 
     private static Lambertian textured() {

@@ -99,7 +99,8 @@ public class HitGeometryTest {
         Affine toWorld = Affine.translation(v(10, 20, 30)).after(Affine.scale(v(1, 1, 2)));
         Surface placed = new Transformed(triangle, toWorld);
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue(placed.intersect(out, new Ray(v(0, 0, 0), v(1, 1, 1))));
+        // A ray toward the hit's world point (the placed triangle's box is tested before the triangle).
+        assertTrue(placed.intersect(out, new Ray(v(0, 0, 0), v(10.25, 20.25, 30.5))));
         assertVec("the record's location is mapped out", v(10.25, 20.25, 30.5), out.location, 1e-14);
         HitGeometry g = Placements.of(placed).geometryOf(out);
         assertVec(v(10.25, 20.25, 30.5), g.point, 1e-14);
