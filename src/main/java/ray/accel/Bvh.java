@@ -26,12 +26,15 @@ public final class Bvh {
     final int[] fileIndex;
     final float[] boxes;
     final int[] links;
+    /** The most far children a search can have waiting: the tree's depth. */
+    private final int stackSize;
 
-    Bvh(Surface[] items, int[] fileIndex, float[] boxes, int[] links) {
+    Bvh(Surface[] items, int[] fileIndex, float[] boxes, int[] links, int depth) {
         this.items = items;
         this.fileIndex = fileIndex;
         this.boxes = boxes;
         this.links = links;
+        this.stackSize = Math.max(1, depth);
     }
 
     public int nodeCount() {
@@ -53,22 +56,23 @@ public final class Bvh {
         Ray closestSoFar = ray.copy();
         double bestT = ray.end;
         int best = Integer.MAX_VALUE;
+        double near = widenedStart(ray.start);
+        double far = widenedEnd(bestT);
         double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
         double invX = 1 / ray.direction.x, invY = 1 / ray.direction.y, invZ = 1 / ray.direction.z;
-        boolean[] negative = {invX < 0, invY < 0, invZ < 0};
-        int[] stack = new int[MAX_DEPTH];
+        int[] stack = new int[stackSize];
         int top = 0;
         int node = 0;
         long tests = 0;
         long visited = 0;
         while (true) {
             visited++;
-            if (mayHit(node, ox, oy, oz, invX, invY, invZ, ray.start, bestT)) {
+            if (mayHit(node, ox, oy, oz, invX, invY, invZ, near, far)) {
                 int a = links[2 * node];
                 int b = links[2 * node + 1];
                 if (b >= 0) {
                     // Inner node: the near child now, the far one later.
-                    if (negative[b]) {
+                    if ((b == 0 ? invX : b == 1 ? invY : invZ) < 0) {
                         stack[top++] = node + 1;
                         node = a;
                     } else {
@@ -84,6 +88,7 @@ public final class Bvh {
                     if (items[i].intersect(out, closestSoFar)) {
                         bestT = out.t;
                         best = fileIndex[i];
+                        far = widenedEnd(bestT);
                     }
                 }
             }
@@ -103,16 +108,18 @@ public final class Bvh {
         IntersectionRecord scratch = new IntersectionRecord();
         double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
         double invX = 1 / ray.direction.x, invY = 1 / ray.direction.y, invZ = 1 / ray.direction.z;
-        int[] stack = new int[MAX_DEPTH];
+        int[] stack = new int[stackSize];
         int top = 0;
         int node = 0;
         long tests = 0;
         long visited = 0;
         boolean hit = false;
+        double near = widenedStart(ray.start);
+        double far = widenedEnd(ray.end);
         search:
         while (true) {
             visited++;
-            if (mayHit(node, ox, oy, oz, invX, invY, invZ, ray.start, ray.end)) {
+            if (mayHit(node, ox, oy, oz, invX, invY, invZ, near, far)) {
                 int a = links[2 * node];
                 int b = links[2 * node + 1];
                 if (b >= 0) {
@@ -139,15 +146,22 @@ public final class Bvh {
         return hit;
     }
 
+    /** The ray's start widened as {@link ray.math.Bounds#mayHit} widens it. */
+    private static double widenedStart(double start) {
+        return start - ray.math.Bounds.PAD * Math.abs(start);
+    }
+
+    private static double widenedEnd(double end) {
+        return end + ray.math.Bounds.PAD * Math.abs(end);
+    }
+
     /**
      * The slab test of {@link ray.math.Bounds#mayHit} on node k's box, which the builder has
-     * already padded; the t interval is widened here.
+     * already padded, for the ray's widened interval [near, far].
      */
     private boolean mayHit(int k, double ox, double oy, double oz, double invX, double invY, double invZ,
-            double start, double end) {
+            double near, double far) {
         int o = 6 * k;
-        double near = start - ray.math.Bounds.PAD * Math.abs(start);
-        double far = end + ray.math.Bounds.PAD * Math.abs(end);
         double t0 = (boxes[o] - ox) * invX;
         double t1 = (boxes[o + 3] - ox) * invX;
         // Written so that a NaN (a ray starting in a slab's plane, parallel to it) leaves near and far as they were.

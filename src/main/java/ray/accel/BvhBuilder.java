@@ -58,7 +58,7 @@ public final class BvhBuilder {
         for (int i = 0; i < n; i++) {
             items[i] = primitives.get(b.order[i]);
         }
-        return new Bvh(items, b.order, flat.boxes, flat.links);
+        return new Bvh(items, b.order, flat.boxes, flat.links, root.depth());
     }
 
     /** A primitive's box; one with an unknown or non-finite extent is everywhere (never skipped), centred at 0. */
@@ -84,6 +84,11 @@ public final class BvhBuilder {
 
         int count() {
             return 1 + (left == null ? 0 : left.count() + right.count());
+        }
+
+        /** Inner nodes on the longest path down: the most far children a search keeps waiting. */
+        int depth() {
+            return left == null ? 0 : 1 + Math.max(left.depth(), right.depth());
         }
     }
 

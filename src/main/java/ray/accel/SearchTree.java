@@ -30,14 +30,37 @@ public final class SearchTree {
             return placed.placing(of(placed.placed(), acceleration, counter), acceleration == Acceleration.BVH, counter);
         }
         if (surface.getClass() == Group.class) {
-            Group copy = new Group();
+            SearchGroup copy = new SearchGroup();
             copy.setShader(surface.getShader());
             for (Surface child : surface.children()) {
                 copy.addSurface(of(child, acceleration, counter));
             }
-            return copy;
+            return copy.completed();
         }
         return new CountedPrimitive(surface, counter);
+    }
+
+    /**
+     * A group's copy: the student's {@link Group} loop finds its closest hit; shadow rays ask its
+     * parts in turn from an array, stopping at the first that is hit.
+     */
+    private static final class SearchGroup extends Group {
+        private Surface[] parts;
+
+        SearchGroup completed() {
+            parts = children().toArray(new Surface[0]);
+            return this;
+        }
+
+        @Override
+        public boolean intersectsAny(Ray ray) {
+            for (Surface part : parts) {
+                if (part.intersectsAny(ray)) {
+                    return true;
+                }
+            }
+            return false;
+        }
     }
 
     /** A primitive (or any surface not known to be made of parts): one intersection test per search. */

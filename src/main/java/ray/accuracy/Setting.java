@@ -1,6 +1,7 @@
 package ray.accuracy;
 
 import java.util.function.UnaryOperator;
+import ray.accel.Acceleration;
 import ray.render.RayOffsets;
 import ray.render.RenderPlan;
 import ray.render.SamplePattern;
@@ -9,7 +10,7 @@ import ray.surface.Surface;
 
 /**
  * One choice a renderer makes, as a point of a {@link Sweep}: how many samples per pixel and where
- * they fall, where secondary rays start, and (for the instructor's sweeps) which intersection code
+ * they fall, where secondary rays start, whether the framework's searches are accelerated, and (for the instructor's sweeps) which intersection code
  * the surfaces run. Everything not named here is the framework's own choice.
  */
 public final class Setting {
@@ -19,15 +20,28 @@ public final class Setting {
     public final int samples;
     public final SamplePattern pattern;
     public final RayOffsets offsets;
+    /** How the framework searches: with its BVH and any-hit shadow rays, or by linear loops. */
+    public final Acceleration acceleration;
     /** Rewrites the scene's surface tree; null for the framework's own intersection code. */
     private final UnaryOperator<Surface> surfaces;
 
     private Setting(String label, int samples, SamplePattern pattern, RayOffsets offsets, UnaryOperator<Surface> surfaces) {
+        this(label, samples, pattern, offsets, surfaces, Acceleration.BVH);
+    }
+
+    private Setting(String label, int samples, SamplePattern pattern, RayOffsets offsets, UnaryOperator<Surface> surfaces,
+            Acceleration acceleration) {
         this.label = label;
         this.samples = samples;
         this.pattern = pattern;
         this.offsets = offsets;
         this.surfaces = surfaces;
+        this.acceleration = acceleration;
+    }
+
+    /** The scene's own samples, searched as {@code mode} says (the image is the same; the time is not). */
+    public static Setting acceleration(String label, Acceleration mode) {
+        return new Setting(label, 0, SamplePattern.GRID, RayOffsets.SCALED, null, mode);
     }
 
     /** The framework's choices at the scene's own samples, on the regular grid. */
@@ -56,7 +70,7 @@ public final class Setting {
 
     /** This setting with secondary rays started by {@code rule} instead, under another label. */
     public Setting withOffsets(String newLabel, RayOffsets rule) {
-        return new Setting(newLabel, samples, pattern, rule, surfaces);
+        return new Setting(newLabel, samples, pattern, rule, surfaces, acceleration);
     }
 
     /** The plan that renders {@code scene} with this setting (the whole image). */
@@ -65,7 +79,7 @@ public final class Setting {
         if (surfaces != null) {
             rendered = SceneCopy.withSurfaces(scene, surfaces.apply(scene.getSurfaces()));
         }
-        return RenderPlan.of(rendered, samples, pattern).withOffsets(offsets);
+        return RenderPlan.of(rendered, samples, pattern).withOffsets(offsets).withAcceleration(acceleration);
     }
 
     @Override

@@ -3,6 +3,7 @@ package ray.accuracy;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.ServiceLoader;
+import ray.accel.Acceleration;
 import ray.render.RayOffsets;
 import ray.render.SamplePattern;
 
@@ -11,7 +12,7 @@ public final class Sweeps {
     /** The samples-per-pixel points of the study unless asked otherwise. */
     public static final List<Integer> SAMPLES = List.of(1, 4, 16, 64, 256);
     /** Every sweep the full study has, in report order. */
-    public static final List<String> ALL = List.of("samples", "arithmetic", "intersection", "offsets");
+    public static final List<String> ALL = List.of("samples", "arithmetic", "intersection", "offsets", "acceleration");
     /** The seed of the jittered points (the reference uses another, so its noise is independent). */
     static final long SEED = 1;
 
@@ -38,7 +39,16 @@ public final class Sweeps {
                         Setting.offsets("offset none", RayOffsets.NONE)), true);
     }
 
-    /** The samples and offsets sweeps, with the providers' sweeps between them, in {@link #ALL}'s order. */
+    /**
+     * The framework's BVH and any-hit shadow rays against plain linear loops: a cost dimension with
+     * no accuracy in it (the images are identical), so its whole effect is in the time column.
+     */
+    public static Sweep acceleration() {
+        return new Sweep("acceleration", "What does the BVH save, at the same error (the image is the same)?",
+                List.of(Setting.acceleration("bvh", Acceleration.BVH), Setting.acceleration("linear", Acceleration.NONE)), true);
+    }
+
+    /** The samples, offsets and acceleration sweeps, with the providers' sweeps between them, in {@link #ALL}'s order. */
     public static List<Sweep> available(List<Integer> counts) {
         List<Sweep> sweeps = new ArrayList<>();
         sweeps.add(samples(counts));
@@ -46,6 +56,7 @@ public final class Sweeps {
             sweeps.addAll(provider.sweeps());
         }
         sweeps.add(offsets());
+        sweeps.add(acceleration());
         sweeps.sort((a, b) -> Integer.compare(order(a.name), order(b.name)));
         return sweeps;
     }

@@ -46,11 +46,24 @@ public class SweepsTest {
         List<String> names = new ArrayList<>();
         sweeps.forEach(s -> names.add(s.name));
         assertEquals("samples", names.get(0));
-        assertEquals("offsets", names.get(names.size() - 1));
+        assertEquals(List.of("offsets", "acceleration"), names.subList(names.size() - 2, names.size()));
         List<String> expectedMissing = new ArrayList<>(Sweeps.ALL);
         expectedMissing.removeAll(names);
         assertEquals(expectedMissing, Sweeps.missing(sweeps));
-        assertEquals(List.of("arithmetic", "intersection"), Sweeps.missing(List.of(Sweeps.samples(List.of(1)), Sweeps.offsets())));
+        assertEquals(List.of("arithmetic", "intersection"),
+                Sweeps.missing(List.of(Sweeps.samples(List.of(1)), Sweeps.offsets(), Sweeps.acceleration())));
+    }
+
+    @Test
+    public void theAccelerationSweepComparesTheBvhWithLinearLoopsAtTheScenesOwnSamples() {
+        Sweep sweep = Sweeps.acceleration();
+        assertTrue(sweep.hasBaseline);
+        assertEquals(ray.accel.Acceleration.BVH, sweep.baseline().acceleration);
+        assertEquals(ray.accel.Acceleration.NONE, sweep.settings.get(1).acceleration);
+        assertEquals(List.of("bvh", "linear"), List.of(sweep.settings.get(0).label, sweep.settings.get(1).label));
+        for (Setting s : sweep.settings) {
+            assertEquals(0, s.samples);
+        }
     }
 
     @Test
