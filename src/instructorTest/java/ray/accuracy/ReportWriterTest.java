@@ -81,7 +81,7 @@ public class ReportWriterTest {
         String md = new String(Files.readAllBytes(report.resolve("results.md")), StandardCharsets.UTF_8);
         assertTrue(md.startsWith("### sphere-on-floor\n"));
         assertTrue(md.contains("|sweep|setting|time (ms)|spread (ms)|runs|rays|RMSE|max error|PSNR (dB)|visibly off|defects|"));
-        assertEquals(study.runs.size(), md.lines().filter(l -> l.matches("\\|(samples|arithmetic|intersection|offsets)\\|.*")).count());
+        assertEquals(study.runs.size(), md.lines().filter(l -> l.matches("\\|(samples|arithmetic|intersection|offsets|acceleration)\\|.*")).count());
         assertTrue(md.contains(Reading.of(study).get(0)));
         try (Stream<Path> files = Files.walk(report)) {
             assertEquals("no temporary files left", 0, files.filter(p -> p.getFileName().toString().startsWith(".accuracy-")).count());
