@@ -21,17 +21,18 @@ public final class Bvh {
     /** Deep enough for any tree the builder makes (it stops splitting at this depth). */
     static final int MAX_DEPTH = 64;
 
+    /** The primitives in file order (the caller's array, shared, not copied). */
     final Surface[] items;
-    /** The position of each of {@link #items} in the file order, for breaking ties as a linear loop does. */
-    final int[] fileIndex;
+    /** The primitives in tree order, by their index in {@link #items}: leaves are ranges of it, and the index breaks ties as a linear loop does. */
+    final int[] order;
     final float[] boxes;
     final int[] links;
     /** The most far children a search can have waiting: the tree's depth. */
     private final int stackSize;
 
-    Bvh(Surface[] items, int[] fileIndex, float[] boxes, int[] links, int depth) {
+    Bvh(Surface[] items, int[] order, float[] boxes, int[] links, int depth) {
         this.items = items;
-        this.fileIndex = fileIndex;
+        this.order = order;
         this.boxes = boxes;
         this.links = links;
         this.stackSize = Math.max(1, depth);
@@ -83,11 +84,11 @@ public final class Bvh {
                 }
                 for (int i = a; i < a - b; i++) {
                     tests++;
-                    boolean earlier = fileIndex[i] < best;
-                    closestSoFar.end = earlier && best != Integer.MAX_VALUE ? Math.nextUp(bestT) : bestT;
-                    if (items[i].intersect(out, closestSoFar)) {
+                    int f = order[i];
+                    closestSoFar.end = f < best && best != Integer.MAX_VALUE ? Math.nextUp(bestT) : bestT;
+                    if (items[f].intersect(out, closestSoFar)) {
                         bestT = out.t;
-                        best = fileIndex[i];
+                        best = f;
                         far = widenedEnd(bestT);
                     }
                 }
@@ -129,7 +130,7 @@ public final class Bvh {
                 }
                 for (int i = a; i < a - b; i++) {
                     tests++;
-                    if (items[i].intersect(scratch, ray)) {
+                    if (items[order[i]].intersect(scratch, ray)) {
                         hit = true;
                         break search;
                     }

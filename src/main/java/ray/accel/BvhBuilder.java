@@ -1,6 +1,5 @@
 package ray.accel;
 
-import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveTask;
@@ -20,6 +19,11 @@ public final class BvhBuilder {
     static final int BINS = 16;
     /** Leaves hold at most this many primitives unless they cannot be split. */
     static final int MAX_LEAF = 4;
+    /**
+     * Two triangles or fewer always make a leaf: splitting them would save at most one triangle test
+     * per ray for a node (32 bytes) per triangle, which a million-triangle mesh cannot afford.
+     */
+    static final int MIN_SPLIT = 2;
     /** The cost of testing a node's box, relative to one intersection test (pbrt-v4 takes ½ too). */
     static final double BOX_COST = 0.5;
     /** Subtrees at least this large are built as tasks of their own. */
@@ -38,14 +42,14 @@ public final class BvhBuilder {
     }
 
     /**
-     * The hierarchy over {@code primitives}, whose file order ties are broken by; with
+     * The hierarchy over {@code primitives} (kept, not copied), whose file order ties are broken by; with
      * {@code split} false, a single leaf (the primitives' box, then each of them in file order).
      */
-    public static Bvh build(List<? extends Surface> primitives, boolean split) {
-        int n = primitives.size();
+    public static Bvh build(Surface[] primitives, boolean split) {
+        int n = primitives.length;
         BvhBuilder b = new BvhBuilder(n);
         for (int i = 0; i < n; i++) {
-            b.setBox(i, primitives.get(i).bounds());
+            b.setBox(i, primitives[i].bounds());
             b.order[i] = i;
         }
         Node root = !split ? b.leaf(0, n)
@@ -54,11 +58,7 @@ public final class BvhBuilder {
                 : b.split(0, n, 0);
         Flat flat = new Flat(root.count(), n);
         flat.write(root, b);
-        Surface[] items = new Surface[n];
-        for (int i = 0; i < n; i++) {
-            items[i] = primitives.get(b.order[i]);
-        }
-        return new Bvh(items, b.order, flat.boxes, flat.links, root.depth());
+        return new Bvh(primitives, b.order, flat.boxes, flat.links, root.depth());
     }
 
     /** A primitive's box; one with an unknown or non-finite extent is everywhere (never skipped), centred at 0. */
@@ -128,7 +128,7 @@ public final class BvhBuilder {
         int axis = cmax[0] - cmin[0] >= cmax[1] - cmin[1] && cmax[0] - cmin[0] >= cmax[2] - cmin[2] ? 0
                 : cmax[1] - cmin[1] >= cmax[2] - cmin[2] ? 1 : 2;
         double extent = cmax[axis] - cmin[axis];
-        if (node.count <= 1 || !(extent > 0) || depth >= Bvh.MAX_DEPTH - 2) {
+        if (node.count <= MIN_SPLIT || !(extent > 0) || depth >= Bvh.MAX_DEPTH - 2) {
             return node; // nothing to split by: one primitive, or all centroids in one place
         }
         int mid = partition(first, end, axis, cmin[axis], extent, node);

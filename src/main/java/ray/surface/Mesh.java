@@ -24,7 +24,7 @@ public class Mesh extends TriangleSet {
         if (data == null) {
             throw new IllegalArgumentException("no <data> is given; expected <data> with the path of an OBJ file");
         }
-        List<Triangle> built = new ArrayList<>();
+        List<Triangle> built = new ArrayList<>(data.triangleCount());
         Vec3[] vertices = toVectors(data.positions);
         Vec3[] normals = data.triangleNormals == null ? null : toVectors(data.normals);
         Vec3[] texCoords = data.triangleTexCoords == null ? null : toUv(data.texCoords);

@@ -1,6 +1,6 @@
 package ray.surface;
 
-import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.List;
 import java.util.Set;
@@ -25,28 +25,28 @@ public abstract class TriangleSet extends Surface {
     /** Sets smaller than this keep a single leaf: their box, then every triangle. */
     public static final int LINEAR_BELOW = 8;
 
-    private final List<Triangle> triangles = new ArrayList<>();
+    /** In file order; an array, since a mesh may have millions (4 bytes each, no list's slack). */
+    private Triangle[] triangles = new Triangle[0];
     private Bvh bvh;
 
     /** Replaces the triangles (by complete(), once the properties are known) and builds their hierarchy. */
     protected void setTriangles(List<Triangle> built) {
-        triangles.clear();
-        triangles.addAll(built);
+        triangles = built.toArray(new Triangle[0]);
         bvh = BvhBuilder.build(triangles, hasTree());
     }
 
     @Override
     public List<Surface> children() {
-        return Collections.unmodifiableList(triangles);
+        return Collections.unmodifiableList(Arrays.asList(triangles));
     }
 
     public int triangleCount() {
-        return triangles.size();
+        return triangles.length;
     }
 
     /** Whether the set is searched through a tree (rather than its box and then every triangle). */
     public boolean hasTree() {
-        return triangles.size() >= LINEAR_BELOW;
+        return triangles.length >= LINEAR_BELOW;
     }
 
     /** The hierarchy's node count (1 for a set searched by its box alone, 0 before the triangles are built). */
@@ -103,13 +103,13 @@ public abstract class TriangleSet extends Surface {
             }
         }
         if (counter != null) {
-            counter.count(triangles.size(), 0);
+            counter.count(triangles.length, 0);
         }
         return hitAny;
     }
 
     @Override
     public String toString() {
-        return getClass().getSimpleName() + "[" + triangles.size() + " triangles]";
+        return getClass().getSimpleName() + "[" + triangles.length + " triangles]";
     }
 }
