@@ -62,7 +62,7 @@ public final class AccelerationBench {
         }
 
         md.append("\n## Mesh scenes: BVH, threads, and Mitsuba 3 on the same file\n\n")
-                .append("| scene | triangles | size, samples | load | linear (2 threads) | BVH, 1 thread | BVH, 2 threads | 1 → 2 threads | Mitsuba 3 scalar_rgb, 2 threads | ray1 / Mitsuba |\n")
+                .append("| scene | primitives | size, samples | load | linear (2 threads) | BVH, 1 thread | BVH, 2 threads | 1 → 2 threads | Mitsuba 3 scalar_rgb, 2 threads | ray1 / Mitsuba |\n")
                 .append("|---|---|---|---|---|---|---|---|---|---|\n");
         for (Path file : MeshScenes.writeAll(out.resolve("mesh-scenes"))) {
             long start = System.nanoTime();
