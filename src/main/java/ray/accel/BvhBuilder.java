@@ -1,6 +1,5 @@
 package ray.accel;
 
-import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveTask;
 import ray.math.Bounds;
@@ -52,10 +51,7 @@ public final class BvhBuilder {
             b.setBox(i, primitives[i].bounds());
             b.order[i] = i;
         }
-        Node root = !split ? b.leaf(0, n)
-                : n >= PARALLEL_ABOVE
-                ? ForkJoinPool.commonPool().invoke(b.new Split(0, n, 0))
-                : b.split(0, n, 0);
+        Node root = split ? b.split(0, n, 0) : b.leaf(0, n);
         Flat flat = new Flat(root.count(), n);
         flat.write(root, b);
         return new Bvh(primitives, b.order, flat.boxes, flat.links, root.depth());
@@ -136,10 +132,12 @@ public final class BvhBuilder {
             return node;
         }
         node.axis = axis;
-        if (node.count >= PARALLEL_ABOVE && ForkJoinTask.inForkJoinPool()) {
+        if (node.count >= PARALLEL_ABOVE) {
+            // The calling thread takes one half and the common pool the other (from any thread).
+            Split left = new Split(first, mid, depth + 1);
             Split right = new Split(mid, end, depth + 1);
-            right.fork();
-            node.left = split(first, mid, depth + 1);
+            ForkJoinTask.invokeAll(left, right);
+            node.left = left.join();
             node.right = right.join();
         } else {
             node.left = split(first, mid, depth + 1);
