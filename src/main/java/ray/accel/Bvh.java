@@ -2,12 +2,13 @@ package ray.accel;
 
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.math.Bounds;
 import ray.surface.Surface;
 
 /**
  * A bounding volume hierarchy over a fixed list of primitives, in flat arrays: node k's box is
  * {@code boxes[6k .. 6k+5]} (min x, y, z, max x, y, z, as floats rounded outward and padded as
- * {@link ray.math.Bounds} pads), and {@code links[2k], links[2k+1]} are either (first primitive,
+ * {@link Bounds} pads), and {@code links[2k], links[2k+1]} are either (first primitive,
  * −count) for a leaf or (second child, split axis) for an inner node, whose first child is k + 1.
  * Built by {@link BvhBuilder}.
  *
@@ -57,8 +58,8 @@ public final class Bvh {
         Ray closestSoFar = ray.copy();
         double bestT = ray.end;
         int best = Integer.MAX_VALUE;
-        double near = widenedStart(ray.start);
-        double far = widenedEnd(bestT);
+        double near = Bounds.widenedStart(ray.start);
+        double far = Bounds.widenedEnd(bestT);
         double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
         double invX = 1 / ray.direction.x, invY = 1 / ray.direction.y, invZ = 1 / ray.direction.z;
         int[] stack = new int[stackSize];
@@ -89,7 +90,7 @@ public final class Bvh {
                     if (items[f].intersect(out, closestSoFar)) {
                         bestT = out.t;
                         best = f;
-                        far = widenedEnd(bestT);
+                        far = Bounds.widenedEnd(bestT);
                     }
                 }
             }
@@ -115,8 +116,8 @@ public final class Bvh {
         long tests = 0;
         long visited = 0;
         boolean hit = false;
-        double near = widenedStart(ray.start);
-        double far = widenedEnd(ray.end);
+        double near = Bounds.widenedStart(ray.start);
+        double far = Bounds.widenedEnd(ray.end);
         search:
         while (true) {
             visited++;
@@ -147,41 +148,11 @@ public final class Bvh {
         return hit;
     }
 
-    /** The ray's start widened as {@link ray.math.Bounds#mayHit} widens it. */
-    private static double widenedStart(double start) {
-        return start - ray.math.Bounds.PAD * Math.abs(start);
-    }
-
-    private static double widenedEnd(double end) {
-        return end + ray.math.Bounds.PAD * Math.abs(end);
-    }
-
-    /**
-     * The slab test of {@link ray.math.Bounds#mayHit} on node k's box, which the builder has
-     * already padded, for the ray's widened interval [near, far].
-     */
+    /** Node k's box (padded when the tree was built) against the ray's widened interval [near, far]. */
     private boolean mayHit(int k, double ox, double oy, double oz, double invX, double invY, double invZ,
             double near, double far) {
         int o = 6 * k;
-        double t0 = (boxes[o] - ox) * invX;
-        double t1 = (boxes[o + 3] - ox) * invX;
-        // Written so that a NaN (a ray starting in a slab's plane, parallel to it) leaves near and far as they were.
-        double lo = Math.min(t0, t1);
-        double hi = Math.max(t0, t1);
-        near = lo > near ? lo : near;
-        far = hi < far ? hi : far;
-        t0 = (boxes[o + 1] - oy) * invY;
-        t1 = (boxes[o + 4] - oy) * invY;
-        lo = Math.min(t0, t1);
-        hi = Math.max(t0, t1);
-        near = lo > near ? lo : near;
-        far = hi < far ? hi : far;
-        t0 = (boxes[o + 2] - oz) * invZ;
-        t1 = (boxes[o + 5] - oz) * invZ;
-        lo = Math.min(t0, t1);
-        hi = Math.max(t0, t1);
-        near = lo > near ? lo : near;
-        far = hi < far ? hi : far;
-        return near <= far + ray.math.Bounds.PAD * Math.abs(far);
+        return Bounds.slabsOverlap(boxes[o], boxes[o + 1], boxes[o + 2], boxes[o + 3], boxes[o + 4], boxes[o + 5],
+                ox, oy, oz, invX, invY, invZ, near, far);
     }
 }

@@ -102,24 +102,48 @@ public final class Bounds {
     /** {@link #mayHit(Vec3, Vec3, double, double)} for a box given by its corners, with the ray's 1/d per axis. */
     public static boolean mayHit(double minX, double minY, double minZ, double maxX, double maxY, double maxZ,
             double ox, double oy, double oz, double invX, double invY, double invZ, double start, double end) {
-        double near = start - PAD * Math.abs(start);
-        double far = end + PAD * Math.abs(end);
-        double pad = PAD * Math.max(Math.abs(minX), Math.abs(maxX));
-        double t0 = (minX - pad - ox) * invX;
-        double t1 = (maxX + pad - ox) * invX;
-        // Written so that a NaN leaves near and far as they were.
-        near = Math.min(t0, t1) > near ? Math.min(t0, t1) : near;
-        far = Math.max(t0, t1) < far ? Math.max(t0, t1) : far;
-        pad = PAD * Math.max(Math.abs(minY), Math.abs(maxY));
-        t0 = (minY - pad - oy) * invY;
-        t1 = (maxY + pad - oy) * invY;
-        near = Math.min(t0, t1) > near ? Math.min(t0, t1) : near;
-        far = Math.max(t0, t1) < far ? Math.max(t0, t1) : far;
-        pad = PAD * Math.max(Math.abs(minZ), Math.abs(maxZ));
-        t0 = (minZ - pad - oz) * invZ;
-        t1 = (maxZ + pad - oz) * invZ;
-        near = Math.min(t0, t1) > near ? Math.min(t0, t1) : near;
-        far = Math.max(t0, t1) < far ? Math.max(t0, t1) : far;
+        double padX = PAD * Math.max(Math.abs(minX), Math.abs(maxX));
+        double padY = PAD * Math.max(Math.abs(minY), Math.abs(maxY));
+        double padZ = PAD * Math.max(Math.abs(minZ), Math.abs(maxZ));
+        return slabsOverlap(minX - padX, minY - padY, minZ - padZ, maxX + padX, maxY + padY, maxZ + padZ,
+                ox, oy, oz, invX, invY, invZ, widenedStart(start), widenedEnd(end));
+    }
+
+    /** The ray's start widened by {@link #PAD} of its magnitude. */
+    public static double widenedStart(double start) {
+        return start - PAD * Math.abs(start);
+    }
+
+    /** The ray's end widened by {@link #PAD} of its magnitude. */
+    public static double widenedEnd(double end) {
+        return end + PAD * Math.abs(end);
+    }
+
+    /**
+     * The slab test on a box that is already padded, for a ray interval [near, far] already widened
+     * ({@link #widenedStart}, {@link #widenedEnd}): a BVH pads its nodes once when it is built.
+     */
+    public static boolean slabsOverlap(double minX, double minY, double minZ, double maxX, double maxY, double maxZ,
+            double ox, double oy, double oz, double invX, double invY, double invZ, double near, double far) {
+        double t0 = (minX - ox) * invX;
+        double t1 = (maxX - ox) * invX;
+        // Written so that a NaN (a ray starting in a slab's plane, parallel to it) leaves near and far as they were.
+        double lo = Math.min(t0, t1);
+        double hi = Math.max(t0, t1);
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        t0 = (minY - oy) * invY;
+        t1 = (maxY - oy) * invY;
+        lo = Math.min(t0, t1);
+        hi = Math.max(t0, t1);
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
+        t0 = (minZ - oz) * invZ;
+        t1 = (maxZ - oz) * invZ;
+        lo = Math.min(t0, t1);
+        hi = Math.max(t0, t1);
+        near = lo > near ? lo : near;
+        far = hi < far ? hi : far;
         return near <= far + PAD * Math.abs(far);
     }
 
