@@ -225,4 +225,27 @@ public class RenderPlanTest {
         assertFalse(plan.runs(Effect.TEXTURES));
         assertTrue(plan.skipped().contains("textures"));
     }
+
+    /** A box of 12 triangles is searched through a tree; a mesh of 4 keeps its box and a plain loop. */
+    @Test
+    public void aBvhIsPlannedWhereItPaysAndDroppedWithoutAcceleration() {
+        Scene scene = emptyScene();
+        ray.surface.Box box = new ray.surface.Box();
+        scene.addSurface(box.complete());
+        ray.surface.Mesh small = new ray.surface.Mesh();
+        // Two quads: 4 triangles, 8 vertices.
+        small.setData(new ray.surface.MeshData(new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1},
+                null, new int[] {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7}, null));
+        scene.addSurface(small.complete());
+        scene.complete();
+        RenderPlan plan = RenderPlan.of(scene);
+        assertTrue(plan.runs(Effect.ACCELERATION));
+        assertEquals("bvh(1 mesh, 12 triangles)", plan.effects().get(plan.effects().size() - 1));
+        assertTrue(box.hasTree());
+        assertFalse(small.hasTree());
+        assertEquals("one leaf: the mesh's box, then its 4 triangles", 1, small.treeNodes());
+        RenderPlan linear = plan.withAcceleration(ray.accel.Acceleration.NONE);
+        assertFalse(linear.runs(Effect.ACCELERATION));
+        assertTrue(linear.skipped().contains("bvh"));
+    }
 }
