@@ -55,16 +55,6 @@ public final class Bvh {
      * which admits a tie and nothing farther.
      */
     public boolean closestHit(IntersectionRecord out, Ray ray, SearchCounter counter) {
-        return search(out, ray, counter, false);
-    }
-
-    /** Whether any primitive is hit for t in (ray.start, ray.end); stops at the first hit found. */
-    public boolean anyHit(Ray ray, SearchCounter counter) {
-        return search(new IntersectionRecord(), ray, counter, true);
-    }
-
-    /** The search of both: the closest hit into {@code out}, or with {@code anyHit} the first found. */
-    private boolean search(IntersectionRecord out, Ray ray, SearchCounter counter, boolean anyHit) {
         Ray closestSoFar = ray.copy();
         double bestT = ray.end;
         int best = Integer.MAX_VALUE;
@@ -77,7 +67,6 @@ public final class Bvh {
         int node = 0;
         long tests = 0;
         long visited = 0;
-        search:
         while (true) {
             visited++;
             if (mayHit(node, ox, oy, oz, invX, invY, invZ, near, far)) {
@@ -102,9 +91,6 @@ public final class Bvh {
                         bestT = out.t;
                         best = f;
                         far = Bounds.widenedEnd(bestT);
-                        if (anyHit) {
-                            break search;
-                        }
                     }
                 }
             }
@@ -117,6 +103,49 @@ public final class Bvh {
             counter.count(tests, visited);
         }
         return best != Integer.MAX_VALUE;
+    }
+
+    /** Whether any primitive is hit for t in (ray.start, ray.end); stops at the first hit found. */
+    public boolean anyHit(Ray ray, SearchCounter counter) {
+        IntersectionRecord scratch = new IntersectionRecord();
+        double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
+        double invX = 1 / ray.direction.x, invY = 1 / ray.direction.y, invZ = 1 / ray.direction.z;
+        int[] stack = new int[stackSize];
+        int top = 0;
+        int node = 0;
+        long tests = 0;
+        long visited = 0;
+        boolean hit = false;
+        double near = Bounds.widenedStart(ray.start);
+        double far = Bounds.widenedEnd(ray.end);
+        search:
+        while (true) {
+            visited++;
+            if (mayHit(node, ox, oy, oz, invX, invY, invZ, near, far)) {
+                int a = links[2 * node];
+                int b = links[2 * node + 1];
+                if (b >= 0) {
+                    stack[top++] = a;
+                    node = node + 1;
+                    continue;
+                }
+                for (int i = a; i < a - b; i++) {
+                    tests++;
+                    if (items[order[i]].intersect(scratch, ray)) {
+                        hit = true;
+                        break search;
+                    }
+                }
+            }
+            if (top == 0) {
+                break;
+            }
+            node = stack[--top];
+        }
+        if (counter != null) {
+            counter.count(tests, visited);
+        }
+        return hit;
     }
 
     /** Node k's box (padded when the tree was built) against the ray's widened interval [near, far]. */
