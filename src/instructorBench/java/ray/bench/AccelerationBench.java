@@ -79,8 +79,7 @@ public final class AccelerationBench {
             Timed linear = time(linearPlan, 2, big ? 0 : 1, big ? 1 : 2);
             double linearSeconds = linear.seconds * (big ? plan.gridSide() * plan.gridSide() : 1);
             Double mitsuba = mitsuba(python, file);
-            long triangles = scene.getSurfaces().children().stream().mapToLong(s -> Math.max(1, s.children().size())).sum();
-            md.append(String.format(Locale.ROOT, "| %s | %,d | %dx%d, %d | %s | %s%s | %s | %s | %.2f | %s | %s |%n", name, triangles,
+            md.append(String.format(Locale.ROOT, "| %s | %,d | %dx%d, %d | %s | %s%s | %s | %s | %.2f | %s | %s |%n", name, plan.primitives(),
                     scene.getWidth(), scene.getHeight(), plan.gridSide() * plan.gridSide(), ms(load), ms(linearSeconds),
                     big ? " (1 sample × 16)" : "", ms(one.seconds), ms(two.seconds), one.seconds / two.seconds,
                     mitsuba == null ? "not installed" : ms(mitsuba), mitsuba == null ? "–" : String.format(Locale.ROOT, "%.2f", two.seconds / mitsuba)));

@@ -43,10 +43,6 @@ public final class Bvh {
         return links.length / 2;
     }
 
-    public int primitiveCount() {
-        return items.length;
-    }
-
     /**
      * Finds the closest hit of the ray for t in (ray.start, ray.end), into {@code out}, as the
      * linear loop over the primitives in file order does (each hit shortens the ray to end at it,

@@ -52,8 +52,8 @@ public final class BvhBuilder {
             b.order[i] = i;
         }
         Node root = split ? b.split(0, n, 0) : b.leaf(0, n);
-        Flat flat = new Flat(root.count(), n);
-        flat.write(root, b);
+        Flat flat = new Flat(root.count());
+        flat.write(root);
         return new Bvh(primitives, b.order, flat.boxes, flat.links, root.depth());
     }
 
@@ -273,17 +273,17 @@ public final class BvhBuilder {
         final int[] links;
         private int next;
 
-        Flat(int nodes, int primitives) {
+        Flat(int nodes) {
             boxes = new float[6 * nodes];
             links = new int[2 * nodes];
         }
 
-        int write(Node node, BvhBuilder b) {
+        int write(Node node) {
             int k = next++;
             for (int axis = 0; axis < 3; axis++) {
                 double min = node.box[axis];
                 double max = node.box[axis + 3];
-                double pad = Bounds.PAD * Math.max(Math.abs(min), Math.abs(max));
+                double pad = Bounds.pad(min, max);
                 boxes[6 * k + axis] = floatBelow(min - pad);
                 boxes[6 * k + axis + 3] = floatAbove(max + pad);
             }
@@ -291,8 +291,8 @@ public final class BvhBuilder {
                 links[2 * k] = node.first;
                 links[2 * k + 1] = -node.count;
             } else {
-                write(node.left, b);
-                links[2 * k] = write(node.right, b);
+                write(node.left);
+                links[2 * k] = write(node.right);
                 links[2 * k + 1] = node.axis;
             }
             return k;

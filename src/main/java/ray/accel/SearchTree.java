@@ -83,7 +83,7 @@ public final class SearchTree {
         @Override
         public boolean intersectsAny(Ray ray) {
             counter.count(1, 0);
-            return primitive.intersect(new IntersectionRecord(), ray);
+            return primitive.intersectsAny(ray);
         }
 
         @Override

@@ -95,18 +95,20 @@ public final class Bounds {
      * starting in a slab's plane parallel to it never rejects.
      */
     public boolean mayHit(Vec3 origin, Vec3 direction, double start, double end) {
-        return !isEmpty() && mayHit(minX, minY, minZ, maxX, maxY, maxZ, origin.x, origin.y, origin.z,
-                1 / direction.x, 1 / direction.y, 1 / direction.z, start, end);
+        if (isEmpty()) {
+            return false;
+        }
+        double padX = pad(minX, maxX);
+        double padY = pad(minY, maxY);
+        double padZ = pad(minZ, maxZ);
+        return slabsOverlap(minX - padX, minY - padY, minZ - padZ, maxX + padX, maxY + padY, maxZ + padZ,
+                origin.x, origin.y, origin.z, 1 / direction.x, 1 / direction.y, 1 / direction.z,
+                widenedStart(start), widenedEnd(end));
     }
 
-    /** {@link #mayHit(Vec3, Vec3, double, double)} for a box given by its corners, with the ray's 1/d per axis. */
-    public static boolean mayHit(double minX, double minY, double minZ, double maxX, double maxY, double maxZ,
-            double ox, double oy, double oz, double invX, double invY, double invZ, double start, double end) {
-        double padX = PAD * Math.max(Math.abs(minX), Math.abs(maxX));
-        double padY = PAD * Math.max(Math.abs(minY), Math.abs(maxY));
-        double padZ = PAD * Math.max(Math.abs(minZ), Math.abs(maxZ));
-        return slabsOverlap(minX - padX, minY - padY, minZ - padZ, maxX + padX, maxY + padY, maxZ + padZ,
-                ox, oy, oz, invX, invY, invZ, widenedStart(start), widenedEnd(end));
+    /** How far a box's side from {@code min} to {@code max} on one axis is widened: {@link #PAD} of its magnitude. */
+    public static double pad(double min, double max) {
+        return PAD * Math.max(Math.abs(min), Math.abs(max));
     }
 
     /** The ray's start widened by {@link #PAD} of its magnitude. */

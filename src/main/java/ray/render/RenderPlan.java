@@ -35,6 +35,11 @@ public final class RenderPlan {
     private final Acceleration acceleration;
     /** What each running effect counts (lights, shaders, groups, triangles, grid side), in Effect order. */
     private final Map<Effect, String> running = new EnumMap<>(Effect.class);
+    /**
+     * What the scene's hierarchies count ("2 meshes, 86,528 triangles"), or null when it has none:
+     * kept apart from {@link #running} so that a plan made without acceleration can be made with it again.
+     */
+    private final String trees;
 
     private RenderPlan(Scene scene, int samplesPerPixel, SamplePattern pattern) {
         this.scene = scene;
@@ -71,9 +76,10 @@ public final class RenderPlan {
         if (walk.count(Effect.VERTEX_NORMALS) > 0) {
             running.put(Effect.VERTEX_NORMALS, count(walk.count(Effect.VERTEX_NORMALS), "triangle"));
         }
-        if (walk.count(Effect.ACCELERATION) > 0) {
-            running.put(Effect.ACCELERATION, count(walk.count(Effect.ACCELERATION), "mesh", "meshes")
-                    + ", " + count(walk.treeTriangles, "triangle"));
+        this.trees = walk.count(Effect.ACCELERATION) == 0 ? null
+                : count(walk.count(Effect.ACCELERATION), "mesh", "meshes") + ", " + count(walk.treeTriangles, "triangle");
+        if (trees != null) {
+            running.put(Effect.ACCELERATION, trees);
         }
     }
 
@@ -102,11 +108,13 @@ public final class RenderPlan {
         this.pattern = plan.pattern;
         this.primitives = plan.primitives;
         this.running.putAll(plan.running);
+        this.trees = plan.trees;
         this.offsets = offsets;
         this.window = window;
         this.acceleration = acceleration;
-        if (acceleration == Acceleration.NONE) {
-            running.remove(Effect.ACCELERATION);
+        running.remove(Effect.ACCELERATION);
+        if (acceleration == Acceleration.BVH && trees != null) {
+            running.put(Effect.ACCELERATION, trees);
         }
     }
 
@@ -230,8 +238,9 @@ public final class RenderPlan {
         }
 
         void surface(Surface s) {
-            note(s.effects());
-            if (s.effects().contains(Effect.ACCELERATION)) {
+            Set<Effect> own = s.effects();
+            note(own);
+            if (own.contains(Effect.ACCELERATION)) {
                 treeTriangles += s.children().size();
             }
             List<Surface> children = s.children();

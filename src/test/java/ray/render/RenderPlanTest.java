@@ -247,5 +247,7 @@ public class RenderPlanTest {
         RenderPlan linear = plan.withAcceleration(ray.accel.Acceleration.NONE);
         assertFalse(linear.runs(Effect.ACCELERATION));
         assertTrue(linear.skipped().contains("bvh"));
+        assertEquals("switched back on, the plan is the scene's again", plan.describe(),
+                linear.withAcceleration(ray.accel.Acceleration.BVH).describe());
     }
 }
