@@ -9,6 +9,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -25,23 +26,47 @@ import ray.testing.StudentTask;
  * the figures. The PNGs are copied beside the page, so it works offline and after the next build.
  *
  * <p>Each test class owns a folder {@code render-diff/<ClassName>/} with one
- * {@code <scene>.properties} and three PNGs per failed scene. A class clears its folder when it
+ * {@code <scene>.properties} and three PNGs per failed scene, and a {@code run.txt} of every scene
+ * it rendered (so the page can say how many matched, or that none ran). A class clears its folder when it
  * starts, and index.html is rebuilt from every folder present after each change, so several test
  * classes contribute to one page and a fixed scene drops out of it on the next run.
  */
 final class RenderDiffReport {
-    static final Path FOLDER = Path.of("build", "reports", "render-diff");
-    static final Path INDEX = FOLDER.resolve("index.html");
+    /** The report the render tests write. */
+    static final RenderDiffReport BUILD = new RenderDiffReport(Path.of("build", "reports", "render-diff"));
+    /** Per test class, each scene it rendered in its last run and whether it matched: scene=true|false. */
+    private static final String RUN_FILE = "run.txt";
 
-    private RenderDiffReport() {
+    private final Path folder;
+
+    RenderDiffReport(Path folder) {
+        this.folder = folder;
+    }
+
+    Path index() {
+        return folder.resolve("index.html");
     }
 
     /** Forgets the entries {@code testClass} made in earlier runs, and rebuilds the page without them. */
-    static synchronized void clear(Class<?> testClass) {
-        Path folder = FOLDER.resolve(testClass.getSimpleName());
+    static void clear(Class<?> testClass) {
+        BUILD.clearEntries(testClass);
+    }
+
+    /** Records that {@code testClass} rendered {@code scene}, matched or not, for the page's count. */
+    static void ran(Class<?> testClass, String scene, boolean passed) {
+        BUILD.record(testClass, scene, passed);
+    }
+
+    static String add(Class<?> testClass, String scene, Path sceneFile, StudentTask task, ImageDiff.Result result,
+            BufferedImage yours, BufferedImage reference) {
+        return BUILD.addEntry(testClass, scene, sceneFile, task, result, yours, reference);
+    }
+
+    synchronized void clearEntries(Class<?> testClass) {
+        Path classFolder = folder.resolve(testClass.getSimpleName());
         try {
-            if (Files.isDirectory(folder)) {
-                try (Stream<Path> walk = Files.walk(folder)) {
+            if (Files.isDirectory(classFolder)) {
+                try (Stream<Path> walk = Files.walk(classFolder)) {
                     for (Path p : walk.sorted(Comparator.reverseOrder()).collect(Collectors.toList())) {
                         Files.delete(p);
                     }
@@ -49,29 +74,43 @@ final class RenderDiffReport {
             }
             writeIndex();
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot clear the render report " + folder, e);
+            throw new UncheckedIOException("cannot clear the render report " + classFolder, e);
+        }
+    }
+
+    synchronized void record(Class<?> testClass, String scene, boolean passed) {
+        Path classFolder = folder.resolve(testClass.getSimpleName());
+        try {
+            Files.createDirectories(classFolder);
+            Files.writeString(classFolder.resolve(RUN_FILE), scene + "=" + passed + "\n", StandardCharsets.UTF_8,
+                    StandardOpenOption.CREATE, StandardOpenOption.APPEND);
+            writeIndex();
+        } catch (IOException e) {
+            // The count on the page is a convenience; the test's own result stands without it.
         }
     }
 
     /** Adds a failed scene to the report and returns the page's location, to name in the failure message. */
-    static synchronized String add(Class<?> testClass, String scene, StudentTask task, ImageDiff.Result result,
-            BufferedImage yours, BufferedImage reference) {
-        Path folder = FOLDER.resolve(testClass.getSimpleName());
+    synchronized String addEntry(Class<?> testClass, String scene, Path sceneFile, StudentTask task,
+            ImageDiff.Result result, BufferedImage yours, BufferedImage reference) {
+        Path classFolder = folder.resolve(testClass.getSimpleName());
         try {
-            Files.createDirectories(folder);
-            PngWriter.write(yours, folder.resolve(scene + "-yours.png"));
-            PngWriter.write(reference, folder.resolve(scene + "-reference.png"));
+            Files.createDirectories(classFolder);
+            PngWriter.write(yours, classFolder.resolve(scene + "-yours.png"));
+            PngWriter.write(reference, classFolder.resolve(scene + "-reference.png"));
             if (result.sameSize()) {
-                PngWriter.write(result.heatMap(), folder.resolve(scene + "-diff.png"));
+                PngWriter.write(result.heatMap(), classFolder.resolve(scene + "-diff.png"));
             }
             Properties entry = new Properties();
             entry.setProperty("scene", scene);
+            // The path as the student types it (scenes/hard/x.xml, not scenes/x.xml), with / on every system.
+            entry.setProperty("file", sceneFile.toString().replace('\\', '/'));
             entry.setProperty("task", task.label());
             entry.setProperty("files", String.join(" and ", task.files));
             entry.setProperty("testClass", testClass.getName());
             entry.setProperty("summary", result.summary());
             entry.setProperty("heatMap", Boolean.toString(result.sameSize()));
-            try (Writer w = Files.newBufferedWriter(folder.resolve(scene + ".properties"), StandardCharsets.UTF_8)) {
+            try (Writer w = Files.newBufferedWriter(classFolder.resolve(scene + ".properties"), StandardCharsets.UTF_8)) {
                 entry.store(w, null);
             }
             writeIndex();
@@ -79,15 +118,22 @@ final class RenderDiffReport {
             // The test fails anyway; a report that cannot be written must not hide why.
             return "(the report could not be written: " + e + ")";
         }
-        return INDEX.toAbsolutePath().toUri().toString();
+        return index().toAbsolutePath().toUri().toString();
     }
 
     /** Rebuilds index.html from every entry under the report folder, by test class and scene. */
-    static void writeIndex() throws IOException {
+    void writeIndex() throws IOException {
         List<Path> entries = new ArrayList<>();
-        if (Files.isDirectory(FOLDER)) {
-            try (Stream<Path> walk = Files.walk(FOLDER, 2)) {
-                walk.filter(p -> p.toString().endsWith(".properties")).sorted().forEach(entries::add);
+        int rendered = 0;
+        if (Files.isDirectory(folder)) {
+            try (Stream<Path> walk = Files.walk(folder, 2)) {
+                for (Path p : walk.sorted().collect(Collectors.toList())) {
+                    if (p.toString().endsWith(".properties")) {
+                        entries.add(p);
+                    } else if (p.getFileName().toString().equals(RUN_FILE)) {
+                        rendered += Files.readAllLines(p, StandardCharsets.UTF_8).size();
+                    }
+                }
             }
         }
         StringBuilder html = new StringBuilder();
@@ -101,15 +147,19 @@ final class RenderDiffReport {
                 .append("img { border: 1px solid #888; image-rendering: pixelated; max-width: 100%; }\n")
                 .append(".ramp span { display: inline-block; width: 1.2em; height: 1em; vertical-align: middle; border: 1px solid #888; }\n")
                 .append("</style>\n</head>\n<body>\n<h1>Render tests: scenes that do not match their reference</h1>\n");
-        if (entries.isEmpty()) {
-            html.append("<p>No render test failed in the last run.</p>\n");
+        if (rendered == 0) {
+            html.append("<p>No render test has run yet: <code>gradle test</code> runs them.</p>\n");
+        } else if (entries.isEmpty()) {
+            html.append("<p>Every scene the last run rendered (").append(rendered)
+                    .append(") matches its reference.</p>\n");
         } else {
-            html.append("<p>").append(entries.size()).append(entries.size() == 1 ? " scene differs" : " scenes differ")
+            html.append("<p>").append(entries.size()).append(" of ").append(rendered)
+                    .append(" scenes rendered in the last run differ")
                     .append(" from the reference images in <code>scenes/reference</code>. A scene passes when at most ")
                     .append(percent(ImageDiff.MAX_SHARE)).append(" of its pixels differ by more than ")
                     .append(ImageDiff.TOLERANCE_LEVELS).append(" levels (of 255) in some channel; docs/grading.md explains why.</p>\n")
-                    .append("<p>Each scene is graded under one task, but a render runs every part of your ray tracer, so a ")
-                    .append("difference can come from any of them; the unit tests of each task narrow it down.</p>\n")
+                    .append("<p>Each scene is graded under one task, but a render runs every task the scene uses; the ")
+                    .append("test's failure message says which of them are unfinished, and each task's unit tests narrow a difference down.</p>\n")
                     .append("<p class=\"ramp\">Heat map: <span style=\"background:#000\"></span> equal, ")
                     .append("<span style=\"background:#0000a0\"></span> within the tolerance, ")
                     .append("<span style=\"background:#c00000\"></span> <span style=\"background:#ff8000\"></span> ")
@@ -121,29 +171,30 @@ final class RenderDiffReport {
             try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
                 entry.load(r);
             }
-            String folder = file.getParent().getFileName().toString();
+            String classFolder = file.getParent().getFileName().toString();
             String scene = entry.getProperty("scene", "?");
-            html.append("<section id=\"").append(escape(folder + "-" + scene)).append("\">\n<h2 class=\"fail\">")
+            html.append("<section id=\"").append(escape(classFolder + "-" + scene)).append("\">\n<h2 class=\"fail\">")
                     .append(escape(scene)).append("</h2>\n<p>").append(escape(entry.getProperty("task", "")))
                     .append(": work in <code>").append(escape(entry.getProperty("files", ""))).append("</code>. Test class <code>")
                     .append(escape(entry.getProperty("testClass", ""))).append("</code>.</p>\n<p>")
                     .append(escape(entry.getProperty("summary", ""))).append("</p>\n<div class=\"row\">\n");
-            figure(html, folder + "/" + scene + "-yours.png", "Your render");
-            figure(html, folder + "/" + scene + "-reference.png", "Reference");
+            figure(html, classFolder + "/" + scene + "-yours.png", "Your render");
+            figure(html, classFolder + "/" + scene + "-reference.png", "Reference");
             if (Boolean.parseBoolean(entry.getProperty("heatMap"))) {
-                figure(html, folder + "/" + scene + "-diff.png", "Difference");
+                figure(html, classFolder + "/" + scene + "-diff.png", "Difference");
             }
-            html.append("</div>\n<p>Render it yourself: <code>gradle run --args=\"render -o out scenes/").append(escape(scene))
-                    .append(".xml\"</code>, then compare: <code>gradle run --args=\"diff scenes/reference/").append(escape(scene))
+            String sceneFile = entry.getProperty("file", "scenes/" + scene + ".xml");
+            html.append("</div>\n<p>Render it yourself: <code>gradle run --args=\"render -o out ").append(escape(sceneFile))
+                    .append("\"</code>, then compare: <code>gradle run --args=\"diff scenes/reference/").append(escape(scene))
                     .append(".png out/").append(escape(scene)).append(".png -o out/").append(escape(scene))
                     .append("-diff.png\"</code></p>\n</section>\n");
         }
         html.append("</body>\n</html>\n");
-        Files.createDirectories(FOLDER);
-        Path temporary = Files.createTempFile(FOLDER, ".index", ".tmp");
+        Files.createDirectories(folder);
+        Path temporary = Files.createTempFile(folder, ".index", ".tmp");
         try {
             Files.writeString(temporary, html, StandardCharsets.UTF_8);
-            Files.move(temporary, INDEX, StandardCopyOption.REPLACE_EXISTING);
+            Files.move(temporary, index(), StandardCopyOption.REPLACE_EXISTING);
         } finally {
             Files.deleteIfExists(temporary);
         }

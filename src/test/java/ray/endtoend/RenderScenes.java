@@ -11,7 +11,6 @@ import ray.image.PngWriter;
 import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneFiles;
-import ray.scene.SceneLoader;
 import ray.testing.StudentTask;
 
 /**
@@ -96,9 +95,8 @@ final class RenderScenes {
         return list;
     }
 
-    /** The scene rendered by the current code at its full size, as 8-bit pixels (PNG row order). */
-    static BufferedImage render(Path file) {
-        Scene scene = SceneLoader.load(file);
+    /** A loaded scene rendered at its full size, as 8-bit pixels (PNG row order). */
+    static BufferedImage render(Scene scene) {
         return PngWriter.toBufferedImage(new Renderer(scene, 0, 0).render().image, scene.getExposure());
     }
 }

@@ -5,9 +5,15 @@ import static org.junit.Assert.fail;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import org.junit.Test;
 import ray.image.ImageDiff;
 import ray.image.PngReader;
+import ray.scene.Scene;
+import ray.scene.SceneException;
+import ray.scene.SceneLoader;
+import ray.testing.NotThisTasksFault;
 import ray.testing.StudentTask;
 
 /**
@@ -16,6 +22,12 @@ import ray.testing.StudentTask;
  * {@link ImageDiff#MAX_SHARE} of the pixels may differ by more than
  * {@link ImageDiff#TOLERANCE_LEVELS} levels). A mismatch adds the scene to the report
  * build/reports/render-diff/index.html, with your image, the reference and a heat map.
+ *
+ * <p>A render runs every task the scene uses, so a failure says whose code is to blame: a scene
+ * that does not load is the scene file's fault; a render that throws is the fault of the task whose
+ * file threw; and a render that differs names the other tasks it needs that fail their
+ * {@link BasicChecks basic check} (still unfinished), rather than blame this test's task for them.
+ * Only the image decides whether the test passes.
  *
  * <p>Subclasses, one per task, give the scenes ({@link RenderScenes#TASKS}), the points and the rule.
  */
@@ -37,18 +49,70 @@ public abstract class RenderTestBase {
         Path file = RenderScenes.fileOf(scene);
         Path referenceFile = RenderScenes.referenceOf(scene);
         if (!Files.exists(file)) {
-            fail("the scene " + file + " is missing (it is listed in RenderScenes.TASKS)");
+            throw new NotThisTasksFault("the scene " + file + " is missing; restore it from the handout");
         }
         if (!Files.exists(referenceFile)) {
-            fail("no reference image " + referenceFile + " for " + file + "; the instructor makes them with gradle references");
+            throw new NotThisTasksFault("no reference image " + referenceFile + " for " + file + "; restore it from the handout");
+        }
+        Scene loaded;
+        try {
+            loaded = SceneLoader.load(file);
+        } catch (SceneException e) {
+            throw new NotThisTasksFault("the scene file cannot be loaded, so this test cannot judge your code:\n    "
+                    + e.getMessage() + "\n    Fix the scene file, or restore it from the handout.");
         }
         BufferedImage reference = PngReader.read(referenceFile);
-        BufferedImage yours = RenderScenes.render(file);
-        ImageDiff.Result result = ImageDiff.compare(reference, yours);
-        if (!result.passed()) {
-            String report = RenderDiffReport.add(getClass(), scene, task(), result, yours, reference);
-            fail(file + " does not look like " + referenceFile + ": " + result.summary()
-                    + ".\n    See your image, the reference and where they differ in " + report);
+        BufferedImage yours;
+        try {
+            yours = RenderScenes.render(loaded);
+        } catch (RuntimeException | StackOverflowError e) {
+            StudentTask thrower = StudentFrames.taskThatThrew(e);
+            if (thrower != null && thrower != task()) {
+                throw new NotThisTasksFault("rendering " + file + " stopped: " + thrower.label() + " threw " + e
+                        + StudentFrames.where(e) + ".\n    Work on the TODO(Task " + thrower.number + ") comments in "
+                        + String.join(" and ", thrower.files) + "; this test can judge your " + task().label()
+                        + " code once the render runs.");
+            }
+            throw e;
         }
+        ImageDiff.Result result = ImageDiff.compare(reference, yours);
+        RenderDiffReport.ran(getClass(), scene, result.passed());
+        if (result.passed()) {
+            return;
+        }
+        String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference);
+        String differs = file + " does not look like " + referenceFile + ": " + result.summary();
+        String see = "\n    See your image, the reference and where they differ in " + report;
+        List<String> unfinished = new ArrayList<>();
+        List<String> fine = new ArrayList<>();
+        for (StudentTask other : BasicChecks.tasksOf(loaded)) {
+            if (other == task()) {
+                continue;
+            }
+            String problem = BasicChecks.problem(other, loaded);
+            if (problem == null) {
+                fine.add("Task " + other.number);
+            } else {
+                unfinished.add(other.label() + ": " + problem);
+            }
+        }
+        String own = BasicChecks.problem(task(), loaded);
+        if (!unfinished.isEmpty() && own == null) {
+            throw new NotThisTasksFault(differs + ".\n    This scene also needs "
+                    + (unfinished.size() == 1 ? "a task that is" : "tasks that are") + " not finished yet:\n      "
+                    + String.join("\n      ", unfinished) + "\n    Your " + task().label()
+                    + " code passes its basic check; this test judges it once the others work." + see);
+        }
+        StringBuilder message = new StringBuilder(differs);
+        if (own != null) {
+            message.append(".\n    Your ").append(task().label()).append(" code fails a basic check: ").append(own);
+        }
+        if (!unfinished.isEmpty()) {
+            message.append("\n    Unfinished too: ").append(String.join("; ", unfinished));
+        } else if (!fine.isEmpty()) {
+            message.append(".\n    The scene also runs ").append(String.join(", ", fine))
+                    .append(", whose basic checks pass; their unit tests narrow a difference down further");
+        }
+        fail(message + see);
     }
 }

@@ -51,6 +51,10 @@ public final class StudentTaskRule implements TestRule {
             public void evaluate() throws Throwable {
                 try {
                     limited.evaluate();
+                } catch (NotThisTasksFault e) {
+                    NotThisTasksFault labelled = new NotThisTasksFault(label + e.getMessage());
+                    labelled.setStackTrace(e.getStackTrace());
+                    throw labelled;
                 } catch (AssertionError e) {
                     throw explained(label, e.getMessage(), e);
                 } catch (org.junit.runners.model.TestTimedOutException e) {
@@ -71,9 +75,15 @@ public final class StudentTaskRule implements TestRule {
         return points != null && points.bonus();
     }
 
+    /**
+     * The failure, labelled, with where to work. An assertion's own message says it all, so it is not
+     * kept as the cause (Gradle would print it a second time); an exception from student code is,
+     * for its stack trace.
+     */
     private AssertionError explained(String label, String message, Throwable cause) {
         AssertionError error = new AssertionError(label + message + "\n    Work on the TODO(Task "
-                + task.number + ") comments in " + String.join(" and ", task.files) + ".", cause);
+                + task.number + ") comments in " + String.join(" and ", task.files) + ".",
+                cause instanceof AssertionError ? null : cause);
         error.setStackTrace(cause.getStackTrace());
         return error;
     }

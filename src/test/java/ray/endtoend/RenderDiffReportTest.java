@@ -1,0 +1,64 @@
+package ray.endtoend;
+
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import ray.image.ImageDiff;
+import ray.testing.StudentTask;
+
+/** The render-diff page: the commands it gives work as typed, and it tells "none ran" from "all matched". */
+public class RenderDiffReportTest {
+    @Rule
+    public final TemporaryFolder temporary = new TemporaryFolder();
+
+    private String page(RenderDiffReport report) throws Exception {
+        return new String(Files.readAllBytes(report.index()), StandardCharsets.UTF_8);
+    }
+
+    @Test
+    public void aPageWrittenBeforeAnyRenderSaysNoneRan() throws Exception {
+        RenderDiffReport report = new RenderDiffReport(temporary.getRoot().toPath());
+        report.clearEntries(SphereRenderTest.class);
+        String html = page(report);
+        assertTrue(html, html.contains("No render test has run yet"));
+        assertFalse(html, html.contains("matches its reference"));
+    }
+
+    @Test
+    public void matchingScenesAreCountedAsSuch() throws Exception {
+        RenderDiffReport report = new RenderDiffReport(temporary.getRoot().toPath());
+        report.clearEntries(SphereRenderTest.class);
+        report.record(SphereRenderTest.class, "one-sphere", true);
+        report.record(SphereRenderTest.class, "globe", true);
+        assertTrue(page(report), page(report).contains("Every scene the last run rendered (2) matches its reference."));
+    }
+
+    @Test
+    public void aSceneInASubfolderIsRenderedByItsRealPath() throws Exception {
+        RenderDiffReport report = new RenderDiffReport(temporary.getRoot().toPath());
+        BufferedImage black = new BufferedImage(4, 4, BufferedImage.TYPE_INT_RGB);
+        BufferedImage white = new BufferedImage(4, 4, BufferedImage.TYPE_INT_RGB);
+        for (int x = 0; x < 4; x++) {
+            for (int y = 0; y < 4; y++) {
+                white.setRGB(x, y, 0xffffff);
+            }
+        }
+        report.record(SphereRenderTest.class, "one-sphere", true);
+        report.record(SphereRenderTest.class, "far-tiny-sphere", false);
+        String location = report.addEntry(SphereRenderTest.class, "far-tiny-sphere", Path.of("scenes", "hard", "far-tiny-sphere.xml"),
+                StudentTask.SPHERE, ImageDiff.compare(white, black), black, white);
+        assertTrue(location, location.endsWith("index.html"));
+        String html = page(report);
+        assertTrue(html, html.contains("render -o out scenes/hard/far-tiny-sphere.xml\""));
+        assertFalse(html, html.contains("scenes/far-tiny-sphere.xml"));
+        assertTrue(html, html.contains("1 of 2 scenes rendered in the last run differ"));
+        assertTrue(Files.isRegularFile(temporary.getRoot().toPath().resolve("SphereRenderTest/far-tiny-sphere-diff.png")));
+    }
+}
