@@ -11,64 +11,27 @@ import ray.surface.HitGeometry;
  */
 public enum RayOffsets {
     /** No offset: new rays start at the computed hit point with t &gt; 0. About half re-hit their surface. */
-    NONE("none") {
-        @Override
-        public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
-            return new Ray(g.location, lightPosition.minus(g.location), 0, SecondaryRays.SHADOW_END);
-        }
-
-        @Override
-        public Ray reflectionRay(HitGeometry g, Vec3 direction) {
-            return new Ray(g.location, direction);
-        }
-    },
+    NONE("none"),
     /**
      * The textbook rule: new rays start at the computed hit point and ignore hits closer than a fixed
      * distance {@link #FIXED_EPSILON} (t_min = ε/|d|). Right for scenes of size ~1 near the origin;
      * too small far from it (the hit point's error grows with its coordinates) and too large for
      * features smaller than ε.
      */
-    FIXED("fixed 1e-6") {
-        @Override
-        public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
-            Vec3 d = lightPosition.minus(g.location);
-            return new Ray(g.location, d, FIXED_EPSILON / d.length(), SecondaryRays.SHADOW_END);
-        }
-
-        @Override
-        public Ray reflectionRay(HitGeometry g, Vec3 direction) {
-            return new Ray(g.location, direction, FIXED_EPSILON / direction.length(), Double.POSITIVE_INFINITY);
-        }
-    },
+    FIXED("fixed 1e-6"),
     /** The framework's rule ({@link SecondaryRays}): off the re-projected hit along the geometric normal, by a bound scaled to the coordinates. */
-    SCALED("scaled") {
-        @Override
-        public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
-            return SecondaryRays.shadowRay(g, lightPosition);
-        }
-
-        @Override
-        public Ray reflectionRay(HitGeometry g, Vec3 direction) {
-            return SecondaryRays.reflectionRay(g, direction);
-        }
-    },
+    SCALED("scaled"),
     /**
      * The framework's rule sized for intersection tests that compute in float: the same
      * {@link SecondaryRays#OFFSET_ULPS} units, of float's ε = 2⁻²⁴ instead of double's 2⁻⁵³. A float
      * test rounds a new ray's origin to float, which moves it by up to 2⁻²⁴ of its coordinates,
      * so double-sized offsets leave it on either side of the surface.
      */
-    SCALED_FOR_FLOAT("scaled for float") {
-        @Override
-        public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
-            return SecondaryRays.shadowRay(g, lightPosition, FLOAT_EPSILON);
-        }
+    SCALED_FOR_FLOAT("scaled for float");
 
-        @Override
-        public Ray reflectionRay(HitGeometry g, Vec3 direction) {
-            return SecondaryRays.reflectionRay(g, direction, FLOAT_EPSILON);
-        }
-    };
+    // The rules are switches rather than constant-specific bodies: a constant with a body compiles
+    // to a sealed enum with subclasses, a class file that Debian's Gradle 4.4 reports as malformed
+    // on every first compile.
 
     /** Float's unit roundoff, 2⁻²⁴. */
     static final double FLOAT_EPSILON = 0x1p-24;
@@ -83,8 +46,31 @@ public enum RayOffsets {
     }
 
     /** The segment from the hit toward the light that a shadow test traces. */
-    public abstract Ray shadowRay(HitGeometry g, Vec3 lightPosition);
+    public Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
+        switch (this) {
+            case NONE:
+                return new Ray(g.location, lightPosition.minus(g.location), 0, SecondaryRays.SHADOW_END);
+            case FIXED:
+                Vec3 d = lightPosition.minus(g.location);
+                return new Ray(g.location, d, FIXED_EPSILON / d.length(), SecondaryRays.SHADOW_END);
+            case SCALED:
+                return SecondaryRays.shadowRay(g, lightPosition);
+            default:
+                return SecondaryRays.shadowRay(g, lightPosition, FLOAT_EPSILON);
+        }
+    }
 
     /** The ray from the hit in {@code direction} that a reflection traces. */
-    public abstract Ray reflectionRay(HitGeometry g, Vec3 direction);
+    public Ray reflectionRay(HitGeometry g, Vec3 direction) {
+        switch (this) {
+            case NONE:
+                return new Ray(g.location, direction);
+            case FIXED:
+                return new Ray(g.location, direction, FIXED_EPSILON / direction.length(), Double.POSITIVE_INFINITY);
+            case SCALED:
+                return SecondaryRays.reflectionRay(g, direction);
+            default:
+                return SecondaryRays.reflectionRay(g, direction, FLOAT_EPSILON);
+        }
+    }
 }
