@@ -13,11 +13,11 @@ import ray.testing.StudentTaskRule;
 /** Task 6's (extra credit) scenes (see {@link RenderScenes#TASKS}), each rendered at full size and compared with its reference. */
 @RunWith(Parameterized.class)
 @Points(value = 2, task = StudentTask.CYLINDER, bonus = true)
-public class CylinderRenderTest extends RenderTestBase {
+public class CylinderRenderBonusTest extends RenderTestBase {
     @Rule
     public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CYLINDER).withTimeoutSeconds(TIMEOUT_SECONDS);
 
-    public CylinderRenderTest(String scene) {
+    public CylinderRenderBonusTest(String scene) {
         super(scene);
     }
 
@@ -28,7 +28,7 @@ public class CylinderRenderTest extends RenderTestBase {
 
     @BeforeClass
     public static void clearReport() {
-        RenderDiffReport.clear(CylinderRenderTest.class);
+        RenderDiffReport.clear(CylinderRenderBonusTest.class);
     }
 
     @Override
