@@ -58,6 +58,23 @@ public class RenderCommandTest {
     }
 
     @Test
+    public void cameraRaysPaintWhereEachRayCrossesTheImagePlane() throws Exception {
+        Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
+        CliRun run = CliRun.of("render", "--camera-rays", "-o", output.toString(), scene.toString());
+        assertEquals(run.toString(), 0, run.status);
+        assertEquals(run.toString(), "floor: camera rays, 4x4 -> " + output.resolve("floor.png") + "\n", run.out);
+        BufferedImage png = PngReader.read(output.resolve("floor.png"));
+        // Pixel (i, j) is seen at ((i + ½)/4, (j + ½)/4): red and green 0.125, 0.375, 0.625, 0.875, which
+        // the PNG stores as floor(255·x^(1/2.2) + ½) = 99, 163, 206, 240. PNG row 0 is the top (j = 3).
+        int[] level = {99, 163, 206, 240};
+        for (int i = 0; i < 4; i++) {
+            for (int j = 0; j < 4; j++) {
+                assertEquals("pixel " + i + ", " + j, (level[i] << 16) | (level[j] << 8), png.getRGB(i, 3 - j) & 0xffffff);
+            }
+        }
+    }
+
+    @Test
     public void renderingOneSceneWritesItsPngAndOneSummaryLine() throws Exception {
         Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
         CliRun run = CliRun.of("render", "-o", output.toString(), scene.toString());

@@ -13,6 +13,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import ray.camera.CameraRayColors;
 import ray.image.PngWriter;
 import ray.render.RenderResult;
 import ray.render.RenderPlan;
@@ -57,6 +58,12 @@ public final class RenderCommand implements Callable<Integer> {
             + "the time and the counts in --stats are not (default: ${DEFAULT-VALUE}).")
     String accel;
 
+    @Option(names = "--camera-rays", description = "Instead of rendering, color each pixel by where its camera ray crosses "
+            + "the image plane (Task 1's picture, before any surface works): correct rays shade from black at the lower left "
+            + "to red at the lower right, green at the upper left and yellow at the upper right; blue marks rays off their "
+            + "camera's rule, magenta rays that cannot see anything (the stubs').")
+    boolean cameraRays;
+
     @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the figures as JSON to this file.")
     Path statsFile;
 
@@ -99,19 +106,11 @@ public final class RenderCommand implements Callable<Integer> {
             }
             try {
                 Scene scene = SceneLoader.load(file);
-                SamplePattern pattern = jitter ? SamplePattern.jittered(seed) : SamplePattern.GRID;
-                RenderPlan plan = RenderPlan.of(scene, samples == null ? 0 : samples, pattern).withAcceleration(acceleration);
-                Renderer renderer = new Renderer(plan, threads == null ? 0 : threads);
-                RenderResult result;
-                // On stderr, and only at a terminal: stdout stays one line per scene for scripts.
-                try (ProgressBar bar = ProgressBar.show(name, renderer::progress, err, System.console() != null)) {
-                    result = renderer.render();
+                if (cameraRays) {
+                    writeCameraRays(scene, name, out);
+                } else {
+                    stats.add(render(scene, name, acceleration, out, err));
                 }
-                PngWriter.write(result.image, scene.getExposure(), output.resolve(name + ".png"));
-                SceneStats s = SceneStats.of(name, scene, result);
-                stats.add(s);
-                out.println(s.summaryLine());
-                out.println(s.planLine());
             } catch (SceneException e) {
                 err.println("error: " + e.getMessage());
                 failures++;
@@ -129,5 +128,28 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(failures + " of " + files.size() + " scenes failed");
         }
         return failures == 0 ? 0 : 1;
+    }
+
+    private SceneStats render(Scene scene, String name, ray.accel.Acceleration acceleration, PrintWriter out, PrintWriter err)
+            throws IOException {
+        SamplePattern pattern = jitter ? SamplePattern.jittered(seed) : SamplePattern.GRID;
+        RenderPlan plan = RenderPlan.of(scene, samples == null ? 0 : samples, pattern).withAcceleration(acceleration);
+        Renderer renderer = new Renderer(plan, threads == null ? 0 : threads);
+        RenderResult result;
+        // On stderr, and only at a terminal: stdout stays one line per scene for scripts.
+        try (ProgressBar bar = ProgressBar.show(name, renderer::progress, err, System.console() != null)) {
+            result = renderer.render();
+        }
+        PngWriter.write(result.image, scene.getExposure(), output.resolve(name + ".png"));
+        SceneStats s = SceneStats.of(name, scene, result);
+        out.println(s.summaryLine());
+        out.println(s.planLine());
+        return s;
+    }
+
+    private void writeCameraRays(Scene scene, String name, PrintWriter out) throws IOException {
+        Path target = output.resolve(name + ".png");
+        PngWriter.write(CameraRayColors.render(scene.getCamera(), scene.getWidth(), scene.getHeight()), 1, target);
+        out.println(name + ": camera rays, " + scene.getWidth() + "x" + scene.getHeight() + " -> " + target);
     }
 }
