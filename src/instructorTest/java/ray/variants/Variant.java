@@ -12,11 +12,23 @@ final class Variant {
     final String name;
     final int task;
     final boolean correct;
+    /** Where its files are: a folder under {@link #ROOT}, or one a test wrote. */
+    private final Path folder;
 
-    private Variant(String name, int task, boolean correct) {
+    private Variant(String name, int task, boolean correct, Path folder) {
         this.name = name;
         this.task = task;
         this.correct = correct;
+        this.folder = folder;
+    }
+
+    private Variant(String name, int task, boolean correct) {
+        this(name, task, correct, ROOT.resolve(name));
+    }
+
+    /** Files a test made (say, the handout's stubs of other tasks), in {@code folder}, graded as task {@code task}'s. */
+    static Variant written(String name, int task, Path folder) {
+        return new Variant(name, task, true, folder);
     }
 
     static Variant correct(String name, int task) {
@@ -28,7 +40,7 @@ final class Variant {
     }
 
     Path folder() {
-        return ROOT.resolve(name);
+        return folder;
     }
 
     @Override
