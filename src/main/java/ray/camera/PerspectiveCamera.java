@@ -11,11 +11,6 @@ public class PerspectiveCamera extends Camera {
         this.projDistance = requirePositive("projDistance", projDistance);
     }
 
-    /** How far in front of viewPoint the image plane lies (for {@link CameraRayColors}). */
-    double projDistance() {
-        return projDistance;
-    }
-
     @Override
     public Ray generateRay(double imageU, double imageV) {
         // TODO(Task 1): make the ray from the eye through image point (imageU, imageV).
