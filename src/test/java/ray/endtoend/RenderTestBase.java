@@ -58,8 +58,8 @@ public abstract class RenderTestBase {
         try {
             loaded = SceneLoader.load(file);
         } catch (SceneException e) {
-            throw new NotThisTasksFault("the scene file cannot be loaded, so this test cannot judge your code:\n    "
-                    + e.getMessage() + "\n    Fix the scene file, or restore it from the handout.");
+            throw new NotThisTasksFault("the scene does not load: " + e.getMessage()
+                    + "\n    Fix the scene file, or restore it from the handout; this test judges your code once it loads.");
         }
         BufferedImage reference = PngReader.read(referenceFile);
         BufferedImage yours;
@@ -84,6 +84,7 @@ public abstract class RenderTestBase {
         String differs = file + " does not look like " + referenceFile + ": " + result.summary();
         String see = "\n    See your image, the reference and where they differ in " + report;
         List<String> unfinished = new ArrayList<>();
+        List<String> unfinishedTasks = new ArrayList<>();
         List<String> fine = new ArrayList<>();
         for (StudentTask other : BasicChecks.tasksOf(loaded)) {
             if (other == task()) {
@@ -94,14 +95,16 @@ public abstract class RenderTestBase {
                 fine.add("Task " + other.number);
             } else {
                 unfinished.add(other.label() + ": " + problem);
+                unfinishedTasks.add(other.label());
             }
         }
         String own = BasicChecks.problem(task(), loaded);
         if (!unfinished.isEmpty() && own == null) {
-            throw new NotThisTasksFault(differs + ".\n    This scene also needs "
-                    + (unfinished.size() == 1 ? "a task that is" : "tasks that are") + " not finished yet:\n      "
-                    + String.join("\n      ", unfinished) + "\n    Your " + task().label()
-                    + " code passes its basic check; this test judges it once the others work." + see);
+            // The first line says it all, since a test summary may show only that line.
+            throw new NotThisTasksFault(file + " also needs " + inWords(unfinishedTasks)
+                    + ", not finished yet: this test judges your " + task().label() + " code once "
+                    + (unfinished.size() == 1 ? "it works" : "they work") + ".\n    " + differs + ".\n    Your " + task().label()
+                    + " code passes its basic check; these fail theirs:\n      " + String.join("\n      ", unfinished) + see);
         }
         StringBuilder message = new StringBuilder(differs);
         if (own != null) {
@@ -114,5 +117,11 @@ public abstract class RenderTestBase {
                     .append(", whose basic checks pass; their unit tests narrow a difference down further");
         }
         fail(message + see);
+    }
+
+    /** "A", "A and B", "A, B and C". */
+    private static String inWords(List<String> items) {
+        int last = items.size() - 1;
+        return last == 0 ? items.get(0) : String.join(", ", items.subList(0, last)) + " and " + items.get(last);
     }
 }
