@@ -102,7 +102,7 @@ public abstract class RenderTestBase {
         if (!unfinished.isEmpty() && own == null) {
             // The first line says it all, since a test summary may show only that line.
             throw new NotThisTasksFault(file + " also needs " + inWords(unfinishedTasks)
-                    + ", not finished yet: this test judges your " + task().label() + " code once "
+                    + (unfinished.size() == 1 ? ", which does" : ", which do") + " not work yet: this test judges your " + task().label() + " code once "
                     + (unfinished.size() == 1 ? "it works" : "they work") + ".\n    " + differs + ".\n    Your " + task().label()
                     + " code passes its basic check; these fail theirs:\n      " + String.join("\n      ", unfinished) + see);
         }
