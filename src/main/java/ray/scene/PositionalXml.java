@@ -71,18 +71,14 @@ final class PositionalXml {
             int line = Math.max(1, e.getLineNumber());
             int column = Math.max(1, e.getColumnNumber());
             String text = new String(bytes, StandardCharsets.UTF_8);
-            if (XmlProblems.ENDS_INSIDE_MARKUP.equals(e.getMessage()) && !builder.open.isEmpty()) {
-                // A comment or CDATA section left open: point at where it starts, not at the end of the file.
-                SceneException unclosed = unclosedAtEnd(file, text, "<!--", "-->", "comment");
-                if (unclosed == null) {
-                    unclosed = unclosedAtEnd(file, text, "<![CDATA[", "]]>", "CDATA section");
-                }
-                if (unclosed != null) {
-                    throw unclosed;
-                }
+            TextPositions positions = new TextPositions(text);
+            FoundEndTag endTag = FoundEndTag.at(positions, line, column);
+            SceneException unclosed = Unclosed.error(file, positions, builder.open, e.getMessage(), endTag, line, column);
+            if (unclosed != null) {
+                throw unclosed;
             }
-            String open = builder.open.isEmpty() ? null : builder.open.peek().getTagName();
-            throw new SceneException(file, line, column, XmlProblems.of(e.getMessage(), open, builder.anyElement, text, line, column));
+            throw new SceneException(file, line, column,
+                    XmlProblems.of(e.getMessage(), builder.anyElement, text, endTag == null ? null : endTag.name));
         } catch (UnsupportedEncodingException e) {
             // Raised for the encoding named in <?xml ... encoding="..."?>, which is on line 1.
             throw new SceneException(file, 1, 1, "encoding \"" + SceneException.excerpt(String.valueOf(e.getMessage()))
@@ -90,29 +86,6 @@ final class PositionalXml {
         } catch (SAXException | IOException e) {
             throw new SceneException(file, 1, 1, "cannot parse the XML (" + e.getMessage() + "); expected a well-formed XML file");
         }
-    }
-
-    /**
-     * The error for a {@code open}…{@code close} section (a comment or CDATA section) that the file
-     * ends inside, located where it starts; null if the last one is closed.
-     */
-    private static SceneException unclosedAtEnd(Path file, String text, String open, String close, String what) {
-        int start = text.lastIndexOf(open);
-        if (start < 0 || text.indexOf(close, start + open.length()) >= 0) {
-            return null;
-        }
-        int line = 1;
-        int lineStart = 0;
-        for (int i = 0; i < start; i++) {
-            char c = text.charAt(i);
-            // \r\n and \r end a line as \n does.
-            if (c == '\n' || (c == '\r' && (i + 1 == text.length() || text.charAt(i + 1) != '\n'))) {
-                line++;
-                lineStart = i + 1;
-            }
-        }
-        return new SceneException(file, line, start - lineStart + 1,
-                "malformed XML: this " + what + " is never closed; expected " + close + " before the end of the file");
     }
 
     /**

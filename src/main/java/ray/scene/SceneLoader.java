@@ -14,7 +14,6 @@ import java.util.regex.Pattern;
 import org.w3c.dom.Element;
 import org.w3c.dom.NamedNodeMap;
 import org.w3c.dom.Node;
-import org.w3c.dom.NodeList;
 import ray.camera.Camera;
 import ray.shading.Texture;
 import ray.math.Vec3;
@@ -157,7 +156,7 @@ public final class SceneLoader {
     }
 
     /** "an OrthographicCamera", "a Sphere". */
-    private static String article(String word) {
+    static String article(String word) {
         return "AEIOUaeiou".indexOf(word.charAt(0)) >= 0 ? "an " : "a ";
     }
 
@@ -304,7 +303,7 @@ public final class SceneLoader {
             }
             Object found = named.get(ref);
             if (found == null) {
-                throw error(element, unknownRef(element, ref));
+                throw error(element, UnknownRef.problem(element, ref, baseType, named));
             }
             if (!baseType.isInstance(found)) {
                 throw error(element, "ref \"" + excerpt(ref) + "\" names " + article(found.getClass().getSimpleName())
@@ -337,28 +336,6 @@ public final class SceneLoader {
             named.put(name, object);
         }
         return object;
-    }
-
-    /** Why {@code ref} names nothing: it is defined only later in the file, or not at all. */
-    private String unknownRef(Element element, String ref) {
-        for (Node n = element.getParentNode(); n instanceof Element; n = n.getParentNode()) {
-            if (((Element) n).getAttribute("name").equals(ref)) {
-                return "ref \"" + excerpt(ref) + "\" names the object it is inside (line " + PositionalXml.position(n)[0]
-                        + "); expected the name of an object defined before it";
-            }
-        }
-        // Every object defined before the ref and not around it is complete and in named, so the rest come later.
-        NodeList all = element.getOwnerDocument().getElementsByTagName("*");
-        for (int i = 0; i < all.getLength(); i++) {
-            Element e = (Element) all.item(i);
-            if (e.getAttribute("name").equals(ref)) {
-                return "ref \"" + excerpt(ref) + "\" names an object defined later, on line " + PositionalXml.position(e)[0]
-                        + "; expected the name of an object defined before it";
-            }
-        }
-        String suggestion = Suggestions.closest(ref, named.keySet());
-        return "unknown ref \"" + excerpt(ref) + "\"" + (suggestion != null ? " (did you mean \"" + suggestion + "\"?)" : "")
-                + "; expected the name of an object defined earlier in the file";
     }
 
     private Class<?> resolveType(Element element, Class<?> baseType) {

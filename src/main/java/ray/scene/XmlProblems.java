@@ -17,7 +17,8 @@ final class XmlProblems {
     /** What the parser says when the file ends inside an element, comment or CDATA section. */
     static final String ENDS_INSIDE_MARKUP = "XML document structures must start and end within the same entity.";
 
-    private static final Pattern UNMATCHED_END_TAG =
+    /** What the parser says at an end tag that does not close the innermost open element. */
+    static final Pattern UNMATCHED_END_TAG =
             Pattern.compile("The element type \"([^\"]*)\" must be terminated by the matching end-tag .*");
 
     /**
@@ -92,23 +93,19 @@ final class XmlProblems {
      * The problem, in the words a scene error uses.
      *
      * @param message     the parser's message
-     * @param open        the innermost element open where the parser stopped, or null
      * @param anyElement  whether the parser had seen any element
-     * @param text        the file's text, to quote the end tag the parser stopped in
+     * @param text        the file's text
+     * @param endTag      the name in the end tag the parser stopped in, or null
      */
-    static String of(String message, String open, boolean anyElement, String text, int line, int column) {
+    static String of(String message, boolean anyElement, String text, String endTag) {
         String m = message == null ? "" : message;
         if (m.contains("DOCTYPE")) {
             return "a DOCTYPE is not allowed in a scene file; expected plain XML, without entities or external files";
         }
         Matcher unmatched = UNMATCHED_END_TAG.matcher(m);
         if (unmatched.matches()) {
-            String endTag = endTagAt(text, line, column);
-            return "malformed XML: " + (endTag != null ? "</" + endTag + ">" : "an end tag") + " does not close <"
-                    + unmatched.group(1) + ">; expected </" + unmatched.group(1) + ">";
-        }
-        if (m.equals(ENDS_INSIDE_MARKUP) && open != null) {
-            return "malformed XML: the file ends before <" + open + "> is closed; expected </" + open + ">";
+            String found = endTag != null ? "</" + SceneException.excerpt(endTag) + ">" : "an end tag";
+            return "malformed XML: " + found + " does not close <" + unmatched.group(1) + ">; expected </" + unmatched.group(1) + ">";
         }
         if (m.equals("Premature end of file.") && !anyElement) {
             return text.isBlank() ? "the file is empty; expected a <scene> element" : "the file has no elements; expected a <scene> element";
@@ -141,23 +138,5 @@ final class XmlProblems {
     /** The parser's sentences end with a full stop; ours do not. */
     private static String withoutFullStop(String sentence) {
         return sentence.endsWith(".") ? sentence.substring(0, sentence.length() - 1) : sentence;
-    }
-
-    /** The name in the end tag ({@code </name>}) that the parser stopped in, or null if it is not found there. */
-    private static String endTagAt(String text, int line, int column) {
-        String[] lines = text.split("\r\n|\r|\n", -1);
-        if (line > lines.length) {
-            return null;
-        }
-        String l = lines[line - 1];
-        int start = l.lastIndexOf("</", Math.min(column - 1, l.length()));
-        if (start < 0) {
-            return null;
-        }
-        int end = start + 2;
-        while (end < l.length() && l.charAt(end) != '>' && !Character.isWhitespace(l.charAt(end))) {
-            end++;
-        }
-        return end > start + 2 ? SceneException.excerpt(l.substring(start + 2, end)) : null;
     }
 }

@@ -8,9 +8,10 @@ import org.junit.rules.TemporaryFolder;
 
 /**
  * Checks errors in names: unknown elements, types and attributes (with a "did you mean" when a known
- * name is close), a missing type, refs that name nothing, something later or the wrong kind of
- * object, a name used twice, and mesh files that are missing, folders, empty or unreadable. Each
- * error is checked whole: the file, line and column, what is wrong and what was expected.
+ * name is close), a missing type, refs that name something later, the object they are in or the
+ * wrong kind of object (refs that name nothing: {@link SceneLoaderRefErrorsTest}), a name used
+ * twice, and mesh files that are missing, folders, empty or unreadable. Each error is checked whole:
+ * the file, line and column, what is wrong and what was expected.
  *
  * <p>SAX locates an element where its start tag ends, so an element's column is the one just after
  * its {@code >}; each element sits on its own line so that the line is unambiguous.
@@ -181,38 +182,6 @@ public class SceneLoaderNameErrorsTest {
                 </scene>
                 """);
         SceneFixtures.assertError(e, bad(), 1, 20, "unknown attribute version on <scene>; expected no attributes");
-    }
-
-    @Test
-    public void misspelledRefSuggestsADefinedName() {
-        SceneException e = SceneFixtures.loadError(folder, """
-                <scene>
-                  <camera type="PerspectiveCamera"/>
-                  <image>4 3</image>
-                  <shader name="blue" type="Lambertian"/>
-                  <surface type="Sphere">
-                    <shader ref="blu"/>
-                  </surface>
-                </scene>
-                """);
-        SceneFixtures.assertError(e, bad(), 6, 24,
-                "unknown ref \"blu\" (did you mean \"blue\"?); expected the name of an object defined earlier in the file");
-    }
-
-    @Test
-    public void wronglyCasedRefSuggestsTheDefinedName() {
-        SceneException e = SceneFixtures.loadError(folder, """
-                <scene>
-                  <camera type="PerspectiveCamera"/>
-                  <image>4 3</image>
-                  <shader name="blue" type="Lambertian"/>
-                  <surface type="Sphere">
-                    <shader ref="Blue"/>
-                  </surface>
-                </scene>
-                """);
-        SceneFixtures.assertError(e, bad(), 6, 25,
-                "unknown ref \"Blue\" (did you mean \"blue\"?); expected the name of an object defined earlier in the file");
     }
 
     @Test

@@ -206,7 +206,7 @@ public class SceneLoaderTexturesTest {
                 + "  <texture type=\"ClampTexture\" name=\"earthTex\"><image>t.png</image></texture>\n"
                 + "  <shader type=\"Phong\" name=\"s\"><texture ref=\"earthTx\"/></shader>\n</scene>\n");
         SceneFixtures.assertError(ref, root().resolve("bad.xml"), 5, 57,
-                "unknown ref \"earthTx\" (did you mean \"earthTex\"?); expected the name of an object defined earlier in the file");
+                "unknown ref \"earthTx\" (did you mean \"earthTex\"?); expected the name of a Texture defined earlier in the file");
         SceneException type = SceneFixtures.loadError(folder, "<scene>\n" + SceneFixtures.CAMERA_AND_IMAGE
                 + "  <texture type=\"RepeatTextur\" name=\"earthTex\"><image>t.png</image></texture>\n</scene>\n");
         SceneFixtures.assertError(type, root().resolve("bad.xml"), 4, 48,

@@ -56,9 +56,9 @@ public class SceneLoaderXmlErrorsTest {
                 <scene>
                   <camera type="PerspectiveCamera"/>
                 """);
-        // The parser notices at the end of the file: line 3, after the last newline.
-        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 3, 1,
-                "malformed XML: the file ends before <scene> is closed; expected </scene>");
+        // Located at the <scene> left open; the parser noticed at the end of the file, after the last newline.
+        SceneFixtures.assertError(SceneFixtures.loadError(file), file, 1, 1,
+                "malformed XML: <scene> is never closed (the file ends at 3:1); expected </scene> before the end of the file");
     }
 
     @Test
