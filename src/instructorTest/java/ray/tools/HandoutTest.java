@@ -64,7 +64,10 @@ public class HandoutTest {
     public void theBuildAndReadmeLoseTheirInstructorSections() throws Exception {
         String build = Files.readString(handout.resolve("build.gradle"), StandardCharsets.UTF_8);
         assertFalse("the handout's build.gradle still applies the instructor's build", build.contains("instructor.gradle"));
-        assertTrue("the handout's build.gradle lost its test set-up", build.contains("Tests: ${result.successfulTestCount} passed"));
+        assertTrue("the handout's build.gradle lost its test set-up", build.contains("reportTestsByTask(it, 'Tests'"));
+        String report = Files.readString(handout.resolve("gradle/test-report.gradle"), StandardCharsets.UTF_8);
+        assertTrue("the handout's test report lost its closing line",
+                report.contains("${closingWord}: ${result.successfulTestCount} passed, ${result.failedTestCount} failed"));
         String readme = Files.readString(handout.resolve("README.md"), StandardCharsets.UTF_8);
         assertFalse("the handout's README still has the instructor's commands", readme.contains("gradle handout"));
         assertTrue("the handout's README lost the student's commands", readme.contains("gradle test"));

@@ -78,9 +78,9 @@ public class RenderCommandErrorsTest {
         Path bad = CliRun.write(root.resolve("bad.xml"), "<scene>\n  <image>4 4</image>\n  <oops>\n</scene>\n");
         CliRun run = CliRun.of("render", "-o", output.toString(), bad.toString());
         assertNotEquals(run.toString(), 0, run.status);
-        // The parser stops in "</scene>" on line 4, just past its "</".
+        // The parser stops at "</scene>" on line 4; the error is where <oops> was left open, line 3.
         assertArrayEquals(run.toString(), new String[] {
-            "error: " + bad + ":4:3: malformed XML: </scene> does not close <oops>; expected </oops>",
+            "error: " + bad + ":3:3: malformed XML: <oops> is never closed (found </scene> at 4:1); expected </oops> before it",
             "1 of 1 scenes failed",
         }, CliRun.lines(run.err));
         assertFalse(Files.exists(output.resolve("bad.png")));
