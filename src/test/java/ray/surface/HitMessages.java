@@ -59,9 +59,12 @@ public final class HitMessages {
     /**
      * A double as a student would write it: whole numbers without ".0" ("3", not "3.0"), anything
      * else exactly as Java prints it, which is the shortest text that reads back as the same double,
-     * so no digit that tells two results apart is lost.
+     * so no digit that tells two results apart is lost; infinity as the tests write it, "∞".
      */
     public static String number(double x) {
+        if (Double.isInfinite(x)) {
+            return x > 0 ? "∞" : "-∞";
+        }
         if (x == Math.rint(x) && Math.abs(x) < 1e15) {
             return Long.toString((long) x);
         }
