@@ -16,6 +16,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.surface.HitMessages;
 import ray.surface.Sphere;
 import ray.testing.Points;
 import ray.testing.StudentTask;
@@ -125,8 +126,9 @@ public class Task2HiddenTest {
             String what = sphere + ", the ray " + origin + " + t·" + d + " toward the point at longitude "
                     + Math.toDegrees(longitude) + "°, latitude " + Math.toDegrees(latitude) + "°";
             assertHit(what, sphere, out, new Ray(origin, d));
-            assertEquals(what + ": out.texU = ½ + longitude/2π", 0.5 + longitude / (2 * Math.PI), out.texU, 1e-9);
-            assertEquals(what + ": out.texV = ½ + latitude/π", 0.5 + latitude / Math.PI, out.texV, 1e-9);
+            String returned = what + ": " + HitMessages.returned(out, false) + " with the normal " + out.normal + "; ";
+            assertEquals(returned + "out.texU = ½ + longitude/2π", 0.5 + longitude / (2 * Math.PI), out.texU, 1e-9);
+            assertEquals(returned + "out.texV = ½ + latitude/π", 0.5 + latitude / Math.PI, out.texV, 1e-9);
         }
     }
 }
