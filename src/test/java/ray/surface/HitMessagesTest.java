@@ -4,14 +4,15 @@ import static org.junit.Assert.assertEquals;
 
 import org.junit.Test;
 import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
 
 /** The wording of intersection failures, on hand-written records (no student code runs here). */
 public class HitMessagesTest {
+    /** The record of a hit at t (> 0) with β and γ, as the Group tests' stand-in surface reports one. */
     private static IntersectionRecord hit(double t, double beta, double gamma) {
         IntersectionRecord out = new IntersectionRecord();
-        out.t = t;
-        out.beta = beta;
-        out.gamma = gamma;
+        new FixedHitSurface("hand-made", t, Vec3.ZERO, beta, gamma).intersect(out, new Ray(Vec3.ZERO, new Vec3(0, 0, 1)));
         return out;
     }
 
