@@ -1,9 +1,10 @@
 package ray.hidden;
 
 import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertSame;
-import static org.junit.Assert.assertTrue;
+import static ray.surface.HitAsserts.assertHit;
+import static ray.surface.HitAsserts.assertHitAt;
+import static ray.surface.HitAsserts.assertMiss;
 import static ray.surface.Records.assertUntouched;
 import static ray.surface.Records.copyOf;
 import static ray.surface.Records.sentinel;
@@ -15,6 +16,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.surface.HitMessages;
 import ray.surface.Sphere;
 import ray.testing.Points;
 import ray.testing.StudentTask;
@@ -37,14 +39,12 @@ public class Task2HiddenTest {
     public void veryLongAndVeryShortDirectionsScaleT() {
         // The hit at (0,0,1) is 4 along −z from (0,0,5): t = 4/|d|.
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("the ray (0,0,5) + t·(0,0,−1e6) must hit the unit sphere (at t = 4e-6)",
-                unit.intersect(out, new Ray(v(0, 0, 5), v(0, 0, -1e6))));
-        assertEquals("t for the direction (0,0,−1e6)", 4e-6, out.t, 4e-6 * 1e-12);
+        assertHitAt("the ray (0,0,5) + t·(0,0,−1e6) at the unit sphere", unit, out, new Ray(v(0, 0, 5), v(0, 0, -1e6)), 4e-6,
+                4e-6 * 1e-12);
         assertVec("location", v(0, 0, 1), out.location, 1e-12);
         assertVec("normal", v(0, 0, 1), out.normal, 1e-12);
-        assertTrue("the ray (0,0,5) + t·(0,0,−1e-6) must hit the unit sphere (at t = 4e6)",
-                unit.intersect(out, new Ray(v(0, 0, 5), v(0, 0, -1e-6))));
-        assertEquals("t for the direction (0,0,−1e-6)", 4e6, out.t, 4e6 * 1e-12);
+        assertHitAt("the ray (0,0,5) + t·(0,0,−1e-6) at the unit sphere", unit, out, new Ray(v(0, 0, 5), v(0, 0, -1e-6)), 4e6,
+                4e6 * 1e-12);
         assertVec("normal", v(0, 0, 1), out.normal, 1e-12);
     }
 
@@ -53,12 +53,11 @@ public class Task2HiddenTest {
         // From (0,0,1) on the sphere: outward the roots are −2 and 0, inward 0 and 2; t = 0 is not in (0, ∞).
         IntersectionRecord out = sentinel(null);
         IntersectionRecord before = copyOf(out);
-        assertFalse("the ray from (0,0,1), on the unit sphere, toward +z leaves it: the root t = 0 is not in (0, ∞)",
-                unit.intersect(out, new Ray(v(0, 0, 1), v(0, 0, 1))));
+        assertMiss("the ray from (0,0,1), on the unit sphere, toward +z leaves it: the root t = 0 is not in (0, ∞)", unit, out,
+                new Ray(v(0, 0, 1), v(0, 0, 1)));
         assertUntouched(before, out);
-        assertTrue("the ray from (0,0,1), on the unit sphere, toward −z must hit its far side (at t = 2)",
-                unit.intersect(out, new Ray(v(0, 0, 1), v(0, 0, -1))));
-        assertEquals("t of the far side", 2, out.t, 1e-14);
+        assertHitAt("the ray from (0,0,1), on the unit sphere, toward −z at its far side", unit, out, new Ray(v(0, 0, 1), v(0, 0, -1)),
+                2, 1e-14);
         assertVec("location of the far side", v(0, 0, -1), out.location, 1e-14);
         assertVec("normal of the far side (outward)", v(0, 0, -1), out.normal, 1e-14);
     }
@@ -69,10 +68,9 @@ public class Task2HiddenTest {
         // |f + t·d|² = 0.36 + 25t² = 4, so t = √3.64/5, and the normal is (f + t·d)/2 = (0.3, 1.5t, 2t).
         Sphere sphere = new Sphere(v(1, 1, 1), 2);
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("the ray from (1.6,1,1), inside the sphere of center (1,1,1), radius 2, along (0,3,4) must hit it",
-                sphere.intersect(out, new Ray(v(1.6, 1, 1), v(0, 3, 4))));
         double t = Math.sqrt(3.64) / 5;
-        assertEquals("t (from inside, the only root in (0, ∞))", t, out.t, 1e-14);
+        assertHitAt("the ray from (1.6,1,1), inside the sphere of center (1,1,1), radius 2, along (0,3,4) (t = √3.64/5, the only"
+                + " root in (0, ∞))", sphere, out, new Ray(v(1.6, 1, 1), v(0, 3, 4)), t, 1e-14);
         assertVec("location", v(1.6, 1 + 3 * t, 1 + 4 * t), out.location, 1e-14);
         assertVec("normal (outward)", v(0.3, 1.5 * t, 2 * t), out.normal, 1e-14);
         assertSame(sphere, out.surface);
@@ -84,9 +82,8 @@ public class Task2HiddenTest {
         Sphere other = new Sphere();
         IntersectionRecord out = sentinel(other);
         out.t = 1;
-        assertTrue("the ray from (0,0,5) toward −z must hit the unit sphere although out.t was 1",
-                unit.intersect(out, new Ray(v(0, 0, 5), v(0, 0, -1))));
-        assertEquals("a hit must replace out.t, whatever it held: only ray.start and ray.end limit t", 4, out.t, 1e-14);
+        assertHitAt("the ray from (0,0,5) toward −z at the unit sphere, into a record whose t was 1 (a hit must replace out.t,"
+                + " whatever it held: only ray.start and ray.end limit t)", unit, out, new Ray(v(0, 0, 5), v(0, 0, -1)), 4, 1e-14);
         assertSame("a hit must set out.surface", unit, out.surface);
         assertVec("a hit must set out.normal", v(0, 0, 1), out.normal, 1e-14);
     }
@@ -97,14 +94,13 @@ public class Task2HiddenTest {
         Vec3 center = v(1000, -2000, 500);
         Sphere tiny = new Sphere(center, 1e-3);
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("the ray from 10 above the center toward −z must hit the sphere of radius 1e-3 at (1000,−2000,500)",
-                tiny.intersect(out, new Ray(center.plus(v(0, 0, 10)), v(0, 0, -1))));
-        assertEquals("t", 10 - 1e-3, out.t, 1e-9);
+        assertHitAt("the ray from 10 above the center toward −z at the sphere of radius 1e-3 at (1000,−2000,500)", tiny, out,
+                new Ray(center.plus(v(0, 0, 10)), v(0, 0, -1)), 10 - 1e-3, 1e-9);
         assertVec("location", v(1000, -2000, 500.001), out.location, 1e-9);
         assertVec("normal", v(0, 0, 1), out.normal, 1e-6);
         IntersectionRecord miss = new IntersectionRecord();
-        assertFalse("the ray 2e-3 beside the center must miss the sphere of radius 1e-3",
-                tiny.intersect(miss, new Ray(center.plus(v(2e-3, 0, 10)), v(0, 0, -1))));
+        assertMiss("the ray 2e-3 beside the center of the sphere of radius 1e-3", tiny, miss,
+                new Ray(center.plus(v(2e-3, 0, 10)), v(0, 0, -1)));
     }
 
     /**
@@ -129,9 +125,10 @@ public class Task2HiddenTest {
             IntersectionRecord out = new IntersectionRecord();
             String what = sphere + ", the ray " + origin + " + t·" + d + " toward the point at longitude "
                     + Math.toDegrees(longitude) + "°, latitude " + Math.toDegrees(latitude) + "°";
-            assertTrue(what + " must hit", sphere.intersect(out, new Ray(origin, d)));
-            assertEquals(what + ": out.texU = ½ + longitude/2π", 0.5 + longitude / (2 * Math.PI), out.texU, 1e-9);
-            assertEquals(what + ": out.texV = ½ + latitude/π", 0.5 + latitude / Math.PI, out.texV, 1e-9);
+            assertHit(what, sphere, out, new Ray(origin, d));
+            String returned = what + ": " + HitMessages.returned(out, false) + " with the normal " + out.normal + "; ";
+            assertEquals(returned + "out.texU = ½ + longitude/2π", 0.5 + longitude / (2 * Math.PI), out.texU, 1e-9);
+            assertEquals(returned + "out.texV = ½ + latitude/π", 0.5 + latitude / Math.PI, out.texV, 1e-9);
         }
     }
 }

@@ -1,9 +1,11 @@
 package ray.hidden;
 
 import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertSame;
-import static org.junit.Assert.assertTrue;
+import static ray.surface.HitAsserts.assertBarycentrics;
+import static ray.surface.HitAsserts.assertHit;
+import static ray.surface.HitAsserts.assertHitAt;
+import static ray.surface.HitAsserts.assertMiss;
 import static ray.surface.Records.assertUntouched;
 import static ray.surface.Records.copyOf;
 import static ray.surface.Records.sentinel;
@@ -15,6 +17,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.surface.HitMessages;
 import ray.surface.Sphere;
 import ray.surface.Triangle;
 import ray.testing.Points;
@@ -43,11 +46,8 @@ public class Task3HiddenTest {
         for (double[] c : vertexBetaGamma) {
             IntersectionRecord out = new IntersectionRecord();
             String ray = "the ray from (" + c[0] + ", " + c[1] + ", −1) toward +z";
-            assertTrue(ray + " must hit " + FLAT + " from behind, exactly at a vertex",
-                    flat.intersect(out, new Ray(v(c[0], c[1], -1), v(0, 0, 1))));
-            assertEquals(ray + ": t", 3, out.t, 0);
-            assertEquals(ray + ": beta", c[2], out.beta, 0);
-            assertEquals(ray + ": gamma", c[3], out.gamma, 0);
+            assertHitAt(ray + " at " + FLAT + ", from behind, exactly at a vertex", flat, out, new Ray(v(c[0], c[1], -1), v(0, 0, 1)),
+                    3, 0, c[2], c[3], 0);
             assertVec(ray + ": location", v(c[0], c[1], 2), out.location, 0);
             assertVec(ray + ": normal (geometric, not flipped)", v(0, 0, 1), out.normal, 0);
         }
@@ -61,12 +61,9 @@ public class Task3HiddenTest {
         Triangle tilted = new Triangle(v(1, 0, 0), v(0, 2, 0), v(0, 0, 3));
         IntersectionRecord out = new IntersectionRecord();
         String ray = "the ray t·(1000,1000,1000) from the origin";
-        assertTrue(ray + " must hit the triangle (1,0,0), (0,2,0), (0,0,3) (at t = 6/11000)",
-                tilted.intersect(out, new Ray(Vec3.ZERO, v(1000, 1000, 1000))));
-        assertEquals(ray + ": t", 6.0 / 11000, out.t, 1e-17);
+        assertHitAt(ray + " at the triangle (1,0,0), (0,2,0), (0,0,3) (t = 6/11000, β = 3/11, γ = 2/11)", tilted, out,
+                new Ray(Vec3.ZERO, v(1000, 1000, 1000)), 6.0 / 11000, 1e-17, 3.0 / 11, 2.0 / 11, 1e-14);
         assertVec(ray + ": location", v(6.0 / 11, 6.0 / 11, 6.0 / 11), out.location, 1e-14);
-        assertEquals(ray + ": beta", 3.0 / 11, out.beta, 1e-14);
-        assertEquals(ray + ": gamma", 2.0 / 11, out.gamma, 1e-14);
         assertVec(ray + ": normal", v(6.0 / 7, 3.0 / 7, 2.0 / 7), out.normal, 1e-14);
     }
 
@@ -74,14 +71,12 @@ public class Task3HiddenTest {
     public void rayStartingOnTheTriangleDoesNotHitItAtTZero() {
         IntersectionRecord out = sentinel(null);
         IntersectionRecord before = copyOf(out);
-        assertFalse("the ray from (1,0.5,2), on " + FLAT + ", toward +z: its hit t = 0 is not in (0, ∞)",
-                flat.intersect(out, new Ray(v(1, 0.5, 2), v(0, 0, 1))));
-        assertFalse("the ray from (1,0.5,2), on " + FLAT + ", toward −z: its hit t = 0 is not in (0, ∞)",
-                flat.intersect(out, new Ray(v(1, 0.5, 2), v(0, 0, -1))));
+        assertMiss("the ray from (1,0.5,2), on " + FLAT + ", toward +z: its hit t = 0 is not in (0, ∞)", flat, out,
+                new Ray(v(1, 0.5, 2), v(0, 0, 1)));
+        assertMiss("the ray from (1,0.5,2), on " + FLAT + ", toward −z: its hit t = 0 is not in (0, ∞)", flat, out,
+                new Ray(v(1, 0.5, 2), v(0, 0, -1)));
         assertUntouched(before, out);
-        assertTrue("the ray from (1,0.5,3) toward −z must hit " + FLAT + " (at t = 1)",
-                flat.intersect(out, new Ray(v(1, 0.5, 3), v(0, 0, -1))));
-        assertEquals("t", 1, out.t, 0);
+        assertHitAt("the ray from (1,0.5,3) toward −z at " + FLAT, flat, out, new Ray(v(1, 0.5, 3), v(0, 0, -1)), 1, 0);
     }
 
     @Test
@@ -89,12 +84,10 @@ public class Task3HiddenTest {
         Sphere other = new Sphere();
         IntersectionRecord out = sentinel(other);
         out.t = 1;
-        assertTrue("the ray from (1,0.5,5) toward −z must hit " + FLAT + " although out.t was 1",
-                flat.intersect(out, new Ray(v(1, 0.5, 5), v(0, 0, -1))));
-        assertEquals("a hit must replace out.t, whatever it held: only ray.start and ray.end limit t", 3, out.t, 0);
+        assertHitAt("the ray from (1,0.5,5) toward −z at " + FLAT + ", into a record whose t was 1 (a hit must replace out.t,"
+                + " whatever it held: only ray.start and ray.end limit t)", flat, out, new Ray(v(1, 0.5, 5), v(0, 0, -1)), 3, 0);
         assertSame("a hit must set out.surface", flat, out.surface);
-        assertEquals("a hit must set out.beta", 0.25, out.beta, 1e-15);
-        assertEquals("a hit must set out.gamma", 0.25, out.gamma, 1e-15);
+        assertBarycentrics("a hit must set out.beta and out.gamma", out, 0.25, 0.25, 1e-15);
     }
 
     @Test
@@ -104,14 +97,11 @@ public class Task3HiddenTest {
         Triangle small = new Triangle(v0, v0.plus(v(0.01, 0, 0)), v0.plus(v(0, 0.01, 0)));
         IntersectionRecord out = new IntersectionRecord();
         String ray = "the ray toward −z over the point (100.0025, 200.005, 300)";
-        assertTrue(ray + " must hit the triangle with legs 0.01 at (100,200,300)",
-                small.intersect(out, new Ray(v0.plus(v(0.0025, 0.005, 5)), v(0, 0, -1))));
-        assertEquals(ray + ": t", 5, out.t, 1e-9);
-        assertEquals(ray + ": beta", 0.25, out.beta, 1e-9);
-        assertEquals(ray + ": gamma", 0.5, out.gamma, 1e-9);
+        assertHitAt(ray + " at the triangle with legs 0.01 at (100,200,300)", small, out, new Ray(v0.plus(v(0.0025, 0.005, 5)),
+                v(0, 0, -1)), 5, 1e-9, 0.25, 0.5, 1e-9);
         assertVec(ray + ": normal", v(0, 0, 1), out.normal, 1e-12);
-        assertFalse("the ray toward −z over (100.011, 200.005, 300) passes beside the small triangle",
-                small.intersect(new IntersectionRecord(), new Ray(v0.plus(v(0.011, 0.005, 5)), v(0, 0, -1))));
+        assertMiss("the ray toward −z over (100.011, 200.005, 300) passes beside the small triangle", small, new IntersectionRecord(),
+                new Ray(v0.plus(v(0.011, 0.005, 5)), v(0, 0, -1)));
     }
 
     /**
@@ -145,10 +135,11 @@ public class Task3HiddenTest {
             IntersectionRecord out = new IntersectionRecord();
             String what = "the triangle " + corners[0] + ", " + corners[1] + ", " + corners[2] + " with vt " + vts[0] + ", "
                     + vts[1] + ", " + vts[2] + " hit at β = " + beta + ", γ = " + gamma;
-            assertTrue(what + " must be hit", triangle.intersect(out, new Ray(origin, point.minus(origin))));
+            assertHit(what, triangle, out, new Ray(origin, point.minus(origin)));
             double alpha = 1 - beta - gamma;
-            assertEquals(what + ": out.texU", alpha * vts[0].x + beta * vts[1].x + gamma * vts[2].x, out.texU, 1e-8);
-            assertEquals(what + ": out.texV", alpha * vts[0].y + beta * vts[1].y + gamma * vts[2].y, out.texV, 1e-8);
+            String returned = what + ": " + HitMessages.returned(out, true) + "; ";
+            assertEquals(returned + "out.texU", alpha * vts[0].x + beta * vts[1].x + gamma * vts[2].x, out.texU, 1e-8);
+            assertEquals(returned + "out.texV", alpha * vts[0].y + beta * vts[1].y + gamma * vts[2].y, out.texV, 1e-8);
         }
     }
 }

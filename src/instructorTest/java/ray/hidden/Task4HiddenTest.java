@@ -1,9 +1,9 @@
 package ray.hidden;
 
-import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertSame;
-import static org.junit.Assert.assertTrue;
+import static ray.surface.HitAsserts.assertHit;
+import static ray.surface.HitAsserts.assertHitAt;
+import static ray.surface.HitAsserts.assertMiss;
 import static ray.surface.Records.assertUntouched;
 import static ray.surface.Records.copyOf;
 import static ray.surface.Records.sentinel;
@@ -61,18 +61,17 @@ public class Task4HiddenTest {
         Group group = groupOf(children);
 
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("100 children hit at t = 1..100 in shuffled order: the group must hit", group.intersect(out, downZ(0, 1000)));
+        assertHitAt("100 children hit at t = 1..100 in shuffled order, the closest hit", group, out, downZ(0, 1000), 1, 0);
         assertSame("the closest child, hit at t = 1, must be reported", byT.get(0), out.surface);
-        assertEquals("t of the closest hit", 1, out.t, 0);
         assertVec("normal of the closest hit", v(1, 0, 0), out.normal, 0);
-        assertTrue("100 children hit at t = 1..100: the segment (50.5, 1000) holds 51..100", group.intersect(out, downZ(50.5, 1000)));
+        assertHit("100 children hit at t = 1..100: the segment (50.5, 1000) holds 51..100", group, out, downZ(50.5, 1000));
         assertSame("in (50.5, 1000) the closest hit is at t = 51", byT.get(50), out.surface);
         assertVec("normal of the hit at t = 51", v(1, 50, 0), out.normal, 0);
 
         IntersectionRecord miss = sentinel(null);
         IntersectionRecord before = copyOf(miss);
-        assertFalse("100 children hit at t = 1..100: nothing lies in (0, 1)", group.intersect(miss, downZ(0, 1)));
-        assertFalse("100 children hit at t = 1..100: nothing lies in (100, ∞)", group.intersect(miss, downZ(100, Double.POSITIVE_INFINITY)));
+        assertMiss("100 children hit at t = 1..100: nothing lies in (0, 1)", group, miss, downZ(0, 1));
+        assertMiss("100 children hit at t = 1..100: nothing lies in (100, ∞)", group, miss, downZ(100, Double.POSITIVE_INFINITY));
         assertUntouched(before, miss);
     }
 
@@ -83,7 +82,7 @@ public class Task4HiddenTest {
             children.add(new FixedHitSurface("#" + k, 7, v(0, k, 1)));
         }
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("100 children all hit at t = 7: the group must hit", groupOf(children).intersect(out, downZ(0, 10)));
+        assertHit("100 children all hit at t = 7", groupOf(children), out, downZ(0, 10));
         assertSame("100 children all hit at t = 7: the first one added must be reported", children.get(0), out.surface);
         assertVec("the normal of the first child", v(0, 0, 1), out.normal, 0);
     }
@@ -106,12 +105,10 @@ public class Task4HiddenTest {
             enclosing = level;
         }
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("20 nested groups: the group must hit", outermost.intersect(out, downZ(0, 100)));
+        assertHitAt("20 nested groups, whose closest hit is in the innermost", outermost, out, downZ(0, 100), 1, 0);
         assertSame("the closest hit (t = 1) is in the innermost of 20 nested groups", innermostChild, out.surface);
-        assertEquals("t of the closest hit", 1, out.t, 0);
         // With the segment starting past it, the next level out wins.
-        assertTrue("20 nested groups: the group must hit in (1.5, 100)", outermost.intersect(out, downZ(1.5, 100)));
-        assertEquals("t of the closest hit in (1.5, 100)", 2, out.t, 0);
+        assertHitAt("20 nested groups with the segment (1.5, 100)", outermost, out, downZ(1.5, 100), 2, 0);
         assertVec("normal of the hit at t = 2, in level 18", v(0, 0, 18), out.normal, 0);
     }
 
@@ -145,14 +142,13 @@ public class Task4HiddenTest {
         Group group = groupOf(List.of(lower, upper));
         IntersectionRecord out = new IntersectionRecord();
         String ray = "the ray (0,0,5) + t·(0,0,−4)";
-        assertTrue(ray + " must hit planes z = −3 and z = −1", group.intersect(out, new Ray(v(0, 0, 5), v(0, 0, -4))));
+        // The children must see the caller's own ray: a t that shows it was not is named by HitHints.
+        assertHitAt(ray + " at planes z = −3 and z = −1, which the children compute from the ray they are given", group, out,
+                new Ray(v(0, 0, 5), v(0, 0, -4)), 1.5, 0);
         assertSame(ray + " crosses z = −1 first", upper, out.surface);
-        assertEquals(ray + ": pass the ray's own origin and direction (not normalized) to the children", 1.5, out.t, 0);
         assertVec(ray + ": location", v(0, 0, -1), out.location, 0);
-        assertTrue(ray + " in the segment (1.6, 10) must hit z = −3",
-                group.intersect(out, new Ray(v(0, 0, 5), v(0, 0, -4), 1.6, 10)));
+        assertHitAt(ray + " in the segment (1.6, 10) at z = −3", group, out, new Ray(v(0, 0, 5), v(0, 0, -4), 1.6, 10), 2, 0);
         assertSame(ray + " in the segment (1.6, 10) hits z = −3 at t = 2", lower, out.surface);
-        assertEquals(ray + ": t in (1.6, 10)", 2, out.t, 0);
     }
 
     @Test
@@ -161,9 +157,8 @@ public class Task4HiddenTest {
         FixedHitSurface child = new FixedHitSurface("child", 4, v(0, 0, 1));
         IntersectionRecord out = sentinel(null);
         out.t = 1;
-        assertTrue("a group with a child hit at t = 4 must hit although out.t was 1",
-                groupOf(List.of(child)).intersect(out, downZ(0, Double.POSITIVE_INFINITY)));
-        assertEquals("the group's hit must replace out.t: only ray.start and ray.end limit t", 4, out.t, 0);
+        assertHitAt("a group with a child hit at t = 4, into a record whose t was 1 (the group's hit must replace out.t: only"
+                + " ray.start and ray.end limit t)", groupOf(List.of(child)), out, downZ(0, Double.POSITIVE_INFINITY), 4, 0);
         assertSame(child, out.surface);
     }
 }

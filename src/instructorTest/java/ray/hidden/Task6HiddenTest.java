@@ -1,9 +1,11 @@
 package ray.hidden;
 
 import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 import static org.junit.Assert.fail;
+import static ray.surface.HitAsserts.assertHit;
+import static ray.surface.HitAsserts.assertHitAt;
+import static ray.surface.HitAsserts.assertMiss;
 import static ray.testing.Asserts.v;
 
 import java.util.Locale;
@@ -85,9 +87,8 @@ public class Task6HiddenTest {
             IntersectionRecord out = new IntersectionRecord();
             String what = String.format(Locale.ROOT, "%s, the ray %s + t·%s aimed at %s on its %s", cylinder, ray.origin, d, point,
                     part == 0 ? "side" : part == 1 ? "top cap" : "bottom cap");
-            assertTrue(what + " must hit at t = " + s, cylinder.intersect(out, ray));
             double scale = c.maxAbs() + r + h;
-            assertEquals(what + ": t", s, out.t, 1e-9 * s * Math.max(1, scale / (s * length)));
+            assertHitAt(what, cylinder, out, ray, s, 1e-9 * s * Math.max(1, scale / (s * length)));
             assertTrue(what + ": location " + out.location + " is not the aimed point", out.location.minus(point).maxAbs() < 1e-9 * scale);
             assertTrue(what + ": normal " + out.normal + ", expected the unit outward " + normal,
                     out.normal.minus(normal).maxAbs() < 1e-9);
@@ -109,7 +110,7 @@ public class Task6HiddenTest {
             Vec3 d = randomUnit(random).times(0.1 + 10 * random.nextDouble());
             IntersectionRecord out = new IntersectionRecord();
             String what = String.format(Locale.ROOT, "%s, the ray %s + t·%s from inside", cylinder, origin, d);
-            assertTrue(what + " must hit the wall it leaves through", cylinder.intersect(out, new Ray(origin, d)));
+            assertHit(what + ", at the wall it leaves through", cylinder, out, new Ray(origin, d));
             assertTrue(what + ": t = " + out.t + " must be positive", out.t > 0);
             Vec3 local = out.location.minus(c);
             double fromAxis = Math.hypot(local.x, local.z);
@@ -128,8 +129,8 @@ public class Task6HiddenTest {
     public void linesFartherFromTheAxisThanTheRadiusMiss() {
         Random random = new Random(6_000_003);
         Cylinder hitCheck = new Cylinder(Vec3.ZERO, 1, 1);
-        assertTrue("(0,0.5,5) toward −z hits the cylinder of radius 1 and height 1 at the origin",
-                hitCheck.intersect(new IntersectionRecord(), new Ray(v(0, 0.5, 5), v(0, 0, -1))));
+        assertHit("(0,0.5,5) toward −z at the cylinder of radius 1 and height 1 at the origin", hitCheck, new IntersectionRecord(),
+                new Ray(v(0, 0.5, 5), v(0, 0, -1)));
         for (int i = 0; i < RAYS; i++) {
             Cylinder cylinder = randomCylinder(random);
             Vec3 c = cylinder.getCenter();
@@ -142,8 +143,8 @@ public class Task6HiddenTest {
             Vec3 passing = c.plus(across.times(distance)).plus(v(0, cylinder.getHeight() * random.nextDouble(), 0));
             Vec3 d = alongLine.plus(v(0, 0.5 * random.nextDouble() - 0.25, 0)).times(0.5 + random.nextDouble());
             Ray ray = new Ray(passing.minus(d.times(10)), d);
-            assertFalse(String.format(Locale.ROOT, "%s: the ray %s + t·%s passes %.3g from its axis, so must miss", cylinder,
-                    ray.origin, d, distance), cylinder.intersect(new IntersectionRecord(), ray));
+            assertMiss(String.format(Locale.ROOT, "%s: the ray %s + t·%s passes %.3g from its axis", cylinder, ray.origin, d, distance),
+                    cylinder, new IntersectionRecord(), ray);
         }
     }
 
@@ -153,8 +154,7 @@ public class Task6HiddenTest {
         Cylinder cylinder = new Cylinder(v(0, -1, 0), 2, 2);
         IntersectionRecord out = new IntersectionRecord();
         out.t = 0.5;
-        assertTrue("(0,0,10) toward −z must hit the side at z = 2, t = 8, whatever out.t held",
-                cylinder.intersect(out, new Ray(v(0, 0, 10), v(0, 0, -1))));
-        assertEquals("t", 8, out.t, 1e-12);
+        assertHitAt("(0,0,10) toward −z at the side at z = 2, whatever out.t held", cylinder, out, new Ray(v(0, 0, 10), v(0, 0, -1)),
+                8, 1e-12);
     }
 }

@@ -1,9 +1,6 @@
 package ray.surface;
 
-import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertSame;
-import static org.junit.Assert.assertTrue;
 import static ray.surface.Records.assertUntouched;
 import static ray.surface.Records.copyOf;
 import static ray.surface.Records.sentinel;
@@ -36,8 +33,7 @@ public class CylinderBonusTest {
     static void assertHit(String what, Cylinder cylinder, Ray ray, double t, Vec3 location, Vec3 normal) {
         IntersectionRecord out = new IntersectionRecord();
         String described = what + " (" + cylinder + ", the ray " + ray.origin + " + t·" + ray.direction + ")";
-        assertTrue(described + " must hit at t = " + t, cylinder.intersect(out, ray));
-        assertEquals(described + ": t", t, out.t, TOL * Math.max(1, Math.abs(t)));
+        HitAsserts.assertHitAt(described, cylinder, out, ray, t, TOL * Math.max(1, Math.abs(t)));
         assertVec(described + ": location", location, out.location, TOL * Math.max(1, location.maxAbs()));
         assertVec(described + ": the unit outward normal", normal, out.normal, TOL);
         assertSame(described + ": out.surface must be the cylinder", cylinder, out.surface);
@@ -47,7 +43,7 @@ public class CylinderBonusTest {
         IntersectionRecord out = sentinel(cylinder);
         IntersectionRecord before = copyOf(out);
         String described = what + " (" + cylinder + ", the ray " + ray.origin + " + t·" + ray.direction + ")";
-        assertFalse(described + " must miss", cylinder.intersect(out, ray));
+        HitAsserts.assertMiss(described, cylinder, out, ray);
         assertUntouched(before, out);
     }
 
@@ -119,8 +115,8 @@ public class CylinderBonusTest {
     public void aMissLeavesTheRecordAlone() {
         IntersectionRecord out = sentinel(upright);
         IntersectionRecord before = copyOf(out);
-        assertFalse("the ray (3,1,5) toward −z passes beside the cylinder", upright.intersect(out, new Ray(v(3, 1, 5), v(0, 0, -1))));
+        HitAsserts.assertMiss("the ray (3,1,5) toward −z passes beside the cylinder", upright, out, new Ray(v(3, 1, 5), v(0, 0, -1)));
         assertUntouched(before, out);
-        assertTrue("the ray (0,1,5) toward −z hits it", upright.intersect(out, new Ray(v(0, 1, 5), v(0, 0, -1))));
+        HitAsserts.assertHit("the ray (0,1,5) toward −z at the cylinder", upright, out, new Ray(v(0, 1, 5), v(0, 0, -1)));
     }
 }

@@ -1,9 +1,10 @@
 package ray.surface;
 
 import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertSame;
-import static org.junit.Assert.assertTrue;
+import static ray.surface.HitAsserts.assertHit;
+import static ray.surface.HitAsserts.assertHitAt;
+import static ray.surface.HitAsserts.assertMiss;
 import static ray.surface.Records.assertUntouched;
 import static ray.surface.Records.copyOf;
 import static ray.surface.Records.sentinel;
@@ -59,9 +60,8 @@ public class GroupTest {
             Group group = groupOf(order.toArray(new Surface[0]));
             IntersectionRecord out = new IntersectionRecord();
             String what = "a group of " + order;
-            assertTrue(what + " must report a hit", group.intersect(out, downZ()));
+            assertHitAt(what + ", the closest hit", group, out, downZ(), 4, 0);
             assertSame(what + " must report the closest surface, near", near, out.surface);
-            assertEquals(what + ": t of the closest hit", 4, out.t, 0);
             assertVec(what + ": location of the closest hit", v(0, 0, -4), out.location, 0);
             assertVec(what + ": normal of the closest hit", v(0, 0, 1), out.normal, 0);
         }
@@ -73,10 +73,10 @@ public class GroupTest {
         FixedHitSurface first = new FixedHitSurface("first", 5, v(0, 0, 1));
         FixedHitSurface second = new FixedHitSurface("second", 5, v(0, 1, 0));
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("a group of two surfaces hit at t = 5 must report a hit", groupOf(first, second).intersect(out, downZ()));
+        assertHit("a group of two surfaces hit at t = 5", groupOf(first, second), out, downZ());
         assertSame("two surfaces hit at the same t: the one added first must be reported", first, out.surface);
         assertVec("the normal must be the first surface's", v(0, 0, 1), out.normal, 0);
-        assertTrue("a group of two surfaces hit at t = 5 must report a hit", groupOf(second, first).intersect(out, downZ()));
+        assertHit("a group of two surfaces hit at t = 5", groupOf(second, first), out, downZ());
         assertSame("two surfaces hit at the same t: the one added first must be reported", second, out.surface);
         assertVec("the normal must be the first surface's", v(0, 1, 0), out.normal, 0);
     }
@@ -86,11 +86,10 @@ public class GroupTest {
         Group group = new Group();
         IntersectionRecord out = sentinel(null);
         IntersectionRecord before = copyOf(out);
-        assertFalse("an empty group must report a miss", group.intersect(out, downZ()));
+        assertMiss("an empty group", group, out, downZ());
         assertUntouched(before, out);
         group.addSurface(middle);
-        assertTrue("a group holding a surface hit at t = 9 must report a hit", group.intersect(out, downZ()));
-        assertEquals("t of the hit", 9, out.t, 0);
+        assertHitAt("a group holding a surface hit at t = 9", group, out, downZ(), 9, 0);
         assertSame(middle, out.surface);
     }
 
@@ -100,30 +99,29 @@ public class GroupTest {
         IntersectionRecord out = sentinel(null);
         IntersectionRecord before = copyOf(out);
         // The children are hit at 4, 9 and 14: none lies in (0, 3.5) or in (15, ∞).
-        assertFalse("no child is hit for t in (0, 3.5): the group must miss",
-                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 0, 3.5)));
-        assertFalse("no child is hit for t in (15, ∞): the group must miss",
-                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 15, Double.POSITIVE_INFINITY)));
+        String rule = ": when every child misses, the group's intersect must return false and leave the record untouched";
+        assertMiss("children hit at t = 4, 9, 14, none inside the segment (0, 3.5)" + rule, group, out,
+                new Ray(Vec3.ZERO, v(0, 0, -1), 0, 3.5));
+        assertMiss("children hit at t = 4, 9, 14, none inside the segment (15, ∞)" + rule, group, out,
+                new Ray(Vec3.ZERO, v(0, 0, -1), 15, Double.POSITIVE_INFINITY));
         assertUntouched(before, out);
-        assertTrue("children hit at t = 4, 9, 14 and a ray with segment (0, ∞): the group must hit",
-                group.intersect(out, downZ()));
-        assertEquals("t of the closest hit", 4, out.t, 0);
+        // The control: a group that never reports a hit must not pass a test of misses.
+        assertHitAt("the misses were right; the control, the same group with the segment (0, ∞) that holds all three hits,"
+                + " must still report the closest", group, out, downZ(), 4, 0);
     }
 
     @Test
     public void hitsOutsideTheRaySegmentAreIgnored() {
         Group group = groupOf(far, near, middle);
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("children hit at t = 4, 9, 14 and a ray with segment (6.5, ∞): the group must hit",
-                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 6.5, Double.POSITIVE_INFINITY)));
+        assertHitAt("children hit at t = 4, 9, 14 and a ray with segment (6.5, ∞), which holds middle's and far's", group, out,
+                new Ray(Vec3.ZERO, v(0, 0, -1), 6.5, Double.POSITIVE_INFINITY), 9, 0);
         assertSame("for t in (6.5, ∞) the closest hit is middle's", middle, out.surface);
-        assertEquals("t for the segment (6.5, ∞)", 9, out.t, 0);
-        assertTrue("children hit at t = 4, 9, 14 and a ray with segment (4, 14): the group must hit",
-                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 4, 14)));
+        assertHit("children hit at t = 4, 9, 14 and a ray with segment (4, 14)", group, out, new Ray(Vec3.ZERO, v(0, 0, -1), 4, 14));
         assertSame("the segment (4, 14) excludes both of its ends, so only middle (t = 9) is inside", middle, out.surface);
         // (9, 14) holds none of them: both ends are excluded.
-        assertFalse("children hit at t = 4, 9, 14 and a ray with segment (9, 14): the group must miss",
-                group.intersect(out, new Ray(Vec3.ZERO, v(0, 0, -1), 9, 14)));
+        assertMiss("children hit at t = 4, 9, 14 and a ray with segment (9, 14), which excludes both ends", group, out,
+                new Ray(Vec3.ZERO, v(0, 0, -1), 9, 14));
         assertSame("a miss must leave the record alone", middle, out.surface);
     }
 
@@ -131,9 +129,7 @@ public class GroupTest {
     public void callersRayIsNotChanged() {
         Ray ray = new Ray(Vec3.ZERO, v(0, 0, -1), 0.5, 100);
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("children hit at t = 4, 9, 14 and a ray with segment (0.5, 100): the group must hit",
-                groupOf(far, middle, near).intersect(out, ray));
-        assertEquals("t of the closest hit", 4, out.t, 0);
+        assertHitAt("children hit at t = 4, 9, 14 and a ray with segment (0.5, 100)", groupOf(far, middle, near), out, ray, 4, 0);
         assertEquals("the caller's ray.start must not change: shorten a copy of the ray", 0.5, ray.start, 0);
         assertEquals("the caller's ray.end must not change: shorten a copy of the ray", 100, ray.end, 0);
         assertVec("the caller's ray.origin must not change", Vec3.ZERO, ray.origin, 0);
@@ -145,23 +141,20 @@ public class GroupTest {
     public void nestedGroupsReportTheClosestPrimitive() {
         Group outer = groupOf(middle, groupOf(far, near));
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("a group holding a group must report the hits inside it", outer.intersect(out, downZ()));
+        assertHitAt("a group holding a group, whose closest hit is inside the inner group", outer, out, downZ(), 4, 0);
         assertSame("the closest hit, near (t = 4), is inside the inner group", near, out.surface);
-        assertEquals("t of the closest hit", 4, out.t, 0);
         // The closest hit may also come before the nested group, whose hits are all farther.
         Group other = groupOf(near, groupOf(far, middle));
-        assertTrue("a group holding a group must report a hit", other.intersect(out, downZ()));
+        assertHitAt("a group holding a group, whose closest hit comes before the inner group", other, out, downZ(), 4, 0);
         assertSame("the closest hit, near (t = 4), comes before the inner group", near, out.surface);
-        assertEquals("t of the closest hit", 4, out.t, 0);
     }
 
     @Test
     public void recordHoldsEverythingTheClosestChildReported() {
         FixedHitSurface triangleLike = new FixedHitSurface("with barycentrics", 3, v(0.6, 0, 0.8), 0.25, 0.5, 0.125, 0.875);
         IntersectionRecord out = new IntersectionRecord();
-        assertTrue("children hit at t = 4, 3, 14: the group must hit", groupOf(near, triangleLike, far).intersect(out, downZ()));
+        assertHitAt("children hit at t = 4, 3, 14", groupOf(near, triangleLike, far), out, downZ(), 3, 0);
         assertSame("the closest child, hit at t = 3", triangleLike, out.surface);
-        assertEquals("t of the closest hit", 3, out.t, 0);
         assertVec("location of the closest hit", v(0, 0, -3), out.location, 0);
         assertVec("normal of the closest hit", v(0.6, 0, 0.8), out.normal, 0);
         assertEquals("beta of the closest hit", 0.25, out.beta, 0);

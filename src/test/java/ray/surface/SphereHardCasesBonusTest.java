@@ -71,7 +71,7 @@ public class SphereHardCasesBonusTest {
             boolean right = inside ? hit && Math.abs(out.t - 1) < 1e-6 : !hit;
             if (!right) {
                 wrong.add(String.format(Locale.ROOT, "the ray toward %s, aimed %.2g %s the silhouette, %s", target, margin,
-                        inside ? "inside" : "outside", inside ? (hit ? "hit at t = " + out.t + " instead of t ≈ 1" : "missed") : "hit"));
+                        inside ? "inside" : "outside", inside ? (hit ? "hit at t = " + out.t + " instead of t ≈ 1" : "missed") : HitMessages.returnedTrue(out, false)));
             }
         }
         if (!wrong.isEmpty()) {

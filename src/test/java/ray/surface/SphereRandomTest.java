@@ -2,7 +2,7 @@ package ray.surface;
 
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertSame;
-import static org.junit.Assert.assertTrue;
+import static ray.surface.HitAsserts.assertHitAt;
 
 import java.math.BigDecimal;
 import java.math.MathContext;
@@ -53,11 +53,9 @@ public class SphereRandomTest {
 
             IntersectionRecord out = new IntersectionRecord();
             String what = "random ray " + i + ", " + ray + ", aimed inside " + sphere;
-            assertTrue(what + ": must hit", sphere.intersect(out, ray));
-            assertSame(what + ": out.surface must be the sphere", sphere, out.surface);
-
             double expected = referenceT(origin, direction, center, radius);
-            assertEquals(what + ": t must be the smallest root in (0, ∞)", expected, out.t, 1e-10 * Math.abs(expected));
+            assertHitAt(what + " (t is the smallest root in (0, ∞))", sphere, out, ray, expected, 1e-10 * Math.abs(expected));
+            assertSame(what + ": out.surface must be the sphere", sphere, out.surface);
             assertEquals(what + ": the location must lie on the sphere, |location − center| = radius",
                     radius, out.location.minus(center).length(), ON_SPHERE * radius);
             // The location is the ray's point at t (to the precision t allows).

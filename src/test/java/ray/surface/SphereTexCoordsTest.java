@@ -1,7 +1,6 @@
 package ray.surface;
 
 import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertTrue;
 import static ray.testing.Asserts.v;
 
 import org.junit.Rule;
@@ -28,10 +27,12 @@ public class SphereTexCoordsTest {
     private static void assertTexCoords(String what, Sphere sphere, Ray ray, double u, double v) {
         IntersectionRecord out = new IntersectionRecord();
         String described = what + " (" + sphere + ", the ray " + ray.origin + " + t·" + ray.direction + ")";
-        assertTrue(described + " must hit", sphere.intersect(out, ray));
-        String rule = "; u = ½ + atan2(x, z)/(2π), v = ½ + asin(y)/π of the unit normal (x, y, z)";
-        assertEquals(described + ": out.texU" + rule, u, out.texU, TOL);
-        assertEquals(described + ": out.texV" + rule, v, out.texV, TOL);
+        HitAsserts.assertHit(described, sphere, out, ray);
+        // What intersect returned comes first, so that JUnit's "expected … but was …" follows the field it is about.
+        String returned = described + ": " + HitMessages.returned(out, false) + " with the normal " + out.normal + "; ";
+        String rule = ", with u = ½ + atan2(x, z)/(2π), v = ½ + asin(y)/π of the unit normal (x, y, z),";
+        assertEquals(returned + "out.texU" + rule, u, out.texU, TOL);
+        assertEquals(returned + "out.texV" + rule, v, out.texV, TOL);
     }
 
     @Test

@@ -199,7 +199,7 @@ public class TriangleHardCasesBonusTest {
             IntersectionRecord before = Records.copyOf(out);
             boolean hit = degenerate.intersect(out, ray);
             if (hit || !untouched(before, out)) {
-                wrong.add(ray + " at " + degenerate + (hit ? " was a hit at t = " + out.t + " with normal " + out.normal
+                wrong.add(ray + " at " + degenerate + (hit ? ": " + HitMessages.returnedTrue(out, true) + " and the normal " + out.normal
                         : " missed but changed the record"));
             }
         }
@@ -255,7 +255,7 @@ public class TriangleHardCasesBonusTest {
             boolean hit = triangle.intersect(out, inPlane);
             if (hit || !untouched(before, out)) {
                 wrong.add(inPlane + " in the plane of " + triangle
-                        + (hit ? " was a hit at t = " + out.t : " missed but changed the record"));
+                        + (hit ? ": " + HitMessages.returnedTrue(out, true) : " missed but changed the record"));
             }
         }
         if (controlMissed != null) {

@@ -1,8 +1,8 @@
 package ray.surface;
 
-import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertSame;
-import static org.junit.Assert.assertTrue;
+import static ray.surface.HitAsserts.assertHit;
+import static ray.surface.HitAsserts.assertT;
 import static ray.testing.Asserts.assertVec;
 
 import java.util.Random;
@@ -48,14 +48,14 @@ public class TriangleRandomTest {
             IntersectionRecord out = new IntersectionRecord();
             String what = "random ray " + i + ", " + ray + ", aimed at " + triangle + " with beta = " + beta
                     + ", gamma = " + gamma;
-            assertTrue(what + ": must hit", triangle.intersect(out, ray));
+            assertHit(what, triangle, out, ray);
             assertSame(what + ": out.surface must be the triangle", triangle, out.surface);
             Vec3 fromBarycentrics = v0.times(1 - out.beta - out.gamma).plus(v1.times(out.beta)).plus(v2.times(out.gamma));
             assertVec(what + ": (1 − beta − gamma)·v0 + beta·v1 + gamma·v2 must be the location", fromBarycentrics,
                     out.location, 1e-10);
             assertVec(what + ": the location must be ray.pointAt(t)", ray.pointAt(out.t), out.location, 1e-10);
             // The ray was aimed at target with direction (target − origin)·scale, so t = 1/scale.
-            assertEquals(what + ": t", 1 / scale, out.t, 1e-9);
+            assertT(what, triangle, out, ray, 1 / scale, 1e-9);
             assertVec(what + ": location", target, out.location, 1e-9);
             assertVec(what + ": the normal of a triangle without vertex normals is its face normal",
                     triangle.getFaceNormal(), out.normal, 1e-14);

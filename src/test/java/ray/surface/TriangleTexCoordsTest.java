@@ -1,7 +1,6 @@
 package ray.surface;
 
 import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertTrue;
 import static ray.testing.Asserts.v;
 
 import org.junit.Rule;
@@ -36,10 +35,12 @@ public class TriangleTexCoordsTest {
     private static void assertTexCoords(String what, Triangle triangle, Ray ray, double u, double v) {
         IntersectionRecord out = new IntersectionRecord();
         String described = what + " (the ray " + ray.origin + " + t·" + ray.direction + ")";
-        assertTrue(described + " must hit the triangle", triangle.intersect(out, ray));
-        String rule = "; (u, v) = (1 − β − γ)·vt0 + β·vt1 + γ·vt2";
-        assertEquals(described + ": out.texU" + rule, u, out.texU, TOL);
-        assertEquals(described + ": out.texV" + rule, v, out.texV, TOL);
+        HitAsserts.assertHit(described + " at the triangle", triangle, out, ray);
+        // What intersect returned comes first, so that JUnit's "expected … but was …" follows the field it is about.
+        String returned = described + ": " + HitMessages.returned(out, true) + "; ";
+        String rule = ", with (u, v) = (1 − β − γ)·vt0 + β·vt1 + γ·vt2,";
+        assertEquals(returned + "out.texU" + rule, u, out.texU, TOL);
+        assertEquals(returned + "out.texV" + rule, v, out.texV, TOL);
     }
 
     @Test
@@ -71,7 +72,7 @@ public class TriangleTexCoordsTest {
         IntersectionRecord out = new IntersectionRecord();
         out.texU = 0.7;
         out.texV = 0.9;
-        assertTrue("the ray from (0.25, 0.25, 1) toward −z must hit the triangle", plain.intersect(out, new Ray(v(0.25, 0.25, 1), v(0, 0, -1))));
+        HitAsserts.assertHit("the ray from (0.25, 0.25, 1) toward −z at the triangle", plain, out, new Ray(v(0.25, 0.25, 1), v(0, 0, -1)));
         assertEquals("out.texU of a triangle whose vt are all (0, 0)", 0, out.texU, 0);
         assertEquals("out.texV of a triangle whose vt are all (0, 0)", 0, out.texV, 0);
     }
