@@ -11,7 +11,7 @@ import ray.math.Vec3;
  * (w = −normalize(viewDir)), u to the right (u = normalize(viewUp × w)), v up (v = w × u).
  * The image plane spans viewWidth × viewHeight, centered on the view axis.
  */
-public abstract class Camera {
+public abstract class Camera implements Cloneable {
     protected Vec3 viewPoint = Vec3.ZERO;
     protected Vec3 viewDir = new Vec3(0, 0, -1);
     protected Vec3 viewUp = new Vec3(0, 1, 0);
@@ -72,6 +72,23 @@ public abstract class Camera {
 
     public Vec3 getViewPoint() {
         return viewPoint;
+    }
+
+    /**
+     * This camera in coordinates whose origin is at {@code origin} (its viewPoint becomes
+     * viewPoint − origin; directions and sizes stay): a copy of every field, so that a camera
+     * class's own settings come along.
+     */
+    public Camera inFrameAt(Vec3 origin) {
+        Camera moved;
+        try {
+            moved = (Camera) clone();
+        } catch (CloneNotSupportedException e) {
+            throw new IllegalStateException(e);
+        }
+        moved.viewPoint = viewPoint.minus(origin);
+        moved.complete();
+        return moved;
     }
 
     protected static double requirePositive(String name, double value) {

@@ -42,7 +42,9 @@ public final class RenderPlan {
     private final String trees;
 
     private RenderPlan(Scene scene, int samplesPerPixel, SamplePattern pattern) {
-        this.scene = scene;
+        // Every render runs in the camera's frame: the same image, with hit points as exact as the
+        // scene's size allows wherever the scene sits (CameraFrame).
+        this.scene = scene.inCameraFrame();
         this.gridSide = Renderer.gridSide(samplesPerPixel);
         this.pattern = pattern;
         this.offsets = RayOffsets.SCALED;

@@ -31,12 +31,16 @@ public class Scene {
     private final Group surfaces = new Group();
     /** Where the primitives sit, for {@link #hitGeometry}; made when first asked for after the last surface is added. */
     private volatile Placements placements;
+    /** This scene seen from a camera at the origin, made when first rendered; dropped by any change. */
+    private volatile Scene cameraFrame;
 
     public void setCamera(Camera camera) {
+        cameraFrame = null;
         this.camera = camera;
     }
 
     public void setImage(int width, int height) {
+        cameraFrame = null;
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("image size is " + width + " " + height + "; expected two positive integers");
         }
@@ -49,6 +53,7 @@ public class Scene {
     }
 
     public void setExposure(double exposure) {
+        cameraFrame = null;
         if (!(exposure >= 0) || Double.isInfinite(exposure)) {
             throw new IllegalArgumentException("exposure is " + exposure + "; expected a number ≥ 0");
         }
@@ -56,10 +61,12 @@ public class Scene {
     }
 
     public void setBackColor(Vec3 backColor) {
+        cameraFrame = null;
         this.backColor = backColor;
     }
 
     public void setSamples(int samples) {
+        cameraFrame = null;
         if (samples <= 0) {
             throw new IllegalArgumentException("samples is " + samples + "; expected a positive integer");
         }
@@ -71,20 +78,24 @@ public class Scene {
     }
 
     public void addLight(Light light) {
+        cameraFrame = null;
         lights.add(light);
     }
 
     /** A named shader defined at the top level, for surfaces to reuse by ref. */
     public void addShader(Shader shader) {
+        cameraFrame = null;
         shaders.add(shader);
     }
 
     /** A named texture defined at the top level, for shaders to reuse by ref. */
     public void addTexture(Texture texture) {
+        cameraFrame = null;
         textures.add(texture);
     }
 
     public synchronized void addSurface(Surface surface) {
+        cameraFrame = null;
         surfaces.addSurface(surface);
         placements = null;
     }
@@ -99,6 +110,24 @@ public class Scene {
             throw new IllegalArgumentException("the scene has no <image> size; expected <image>width height</image>");
         }
         ShaderInheritance.apply(surfaces, new Lambertian());
+    }
+
+    /**
+     * The scene as the renderer sees it: moved so that the camera sits at the origin (see
+     * {@link CameraFrame}), made once and kept until the scene changes; this scene itself when its
+     * camera is already at the origin. Call it once every part is in place.
+     */
+    public Scene inCameraFrame() {
+        Scene made = cameraFrame;
+        if (made == null) {
+            synchronized (this) {
+                if (cameraFrame == null) {
+                    cameraFrame = CameraFrame.of(this);
+                }
+                made = cameraFrame;
+            }
+        }
+        return made;
     }
 
     /**
@@ -127,6 +156,7 @@ public class Scene {
     }
 
     public void setName(String name) {
+        cameraFrame = null;
         this.name = name;
     }
 

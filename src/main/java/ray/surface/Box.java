@@ -58,6 +58,21 @@ public class Box extends TriangleSet {
     }
 
     @Override
+    public Surface inFrameAt(Vec3 origin) {
+        Vec3 min = minPt.minus(origin);
+        Vec3 max = maxPt.minus(origin);
+        if (!(min.x < max.x && min.y < max.y && min.z < max.z)) {
+            // Thinner than a double can tell apart at the camera's distance: keep it as it is, placed.
+            return super.inFrameAt(origin);
+        }
+        Box moved = new Box();
+        moved.setMinPt(min);
+        moved.setMaxPt(max);
+        moved.setShader(getShader());
+        return moved.complete();
+    }
+
+    @Override
     public String toString() {
         return "Box[" + minPt + " to " + maxPt + "]";
     }

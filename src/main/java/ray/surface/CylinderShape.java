@@ -54,6 +54,13 @@ public abstract class CylinderShape extends Surface {
      * radius and the height.
      */
     @Override
+    public Surface inFrameAt(Vec3 origin) {
+        CylinderShape moved = (CylinderShape) copy();
+        moved.center = center.minus(origin);
+        return moved;
+    }
+
+    @Override
     public HitGeometry hitGeometry(IntersectionRecord hit) {
         Vec3 p = hit.location;
         Vec3 normal = hit.normal == null ? Vec3.ZERO : hit.normal.normalized();

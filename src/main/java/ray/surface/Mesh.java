@@ -52,6 +52,15 @@ public class Mesh extends TriangleSet {
         return this;
     }
 
+    /** The same mesh with every vertex position moved, built anew (its tree included) as a loaded mesh is. */
+    @Override
+    public Surface inFrameAt(Vec3 origin) {
+        Mesh moved = new Mesh();
+        moved.setData(data.inFrameAt(origin));
+        moved.setShader(getShader());
+        return moved.complete();
+    }
+
     /** (u, v) pairs as vectors (u, v, 0). */
     private static Vec3[] toUv(double[] uv) {
         Vec3[] t = new Vec3[uv.length / 2];

@@ -39,6 +39,17 @@ public final class MeshData {
         this.triangleTexCoords = triangleTexCoords;
     }
 
+    /** The same mesh with every position moved by −origin (normals, texture coordinates and faces shared). */
+    public MeshData inFrameAt(ray.math.Vec3 origin) {
+        double[] moved = new double[positions.length];
+        for (int i = 0; i < positions.length; i += 3) {
+            moved[i] = positions[i] - origin.x;
+            moved[i + 1] = positions[i + 1] - origin.y;
+            moved[i + 2] = positions[i + 2] - origin.z;
+        }
+        return new MeshData(source, moved, normals, triangles, triangleNormals, texCoords, triangleTexCoords);
+    }
+
     public int vertexCount() {
         return positions.length / 3;
     }

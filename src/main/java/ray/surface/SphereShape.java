@@ -51,6 +51,13 @@ public abstract class SphereShape extends Surface {
         return new HitGeometry(p, center.plusScaled(radius, outward), normal, center.maxAbs() + radius);
     }
 
+    @Override
+    public Surface inFrameAt(Vec3 origin) {
+        SphereShape moved = (SphereShape) copy();
+        moved.center = center.minus(origin);
+        return moved;
+    }
+
     /** The cube about the center with half-side |radius|. */
     @Override
     public Bounds bounds() {

@@ -6,6 +6,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Affine;
 import ray.math.Bounds;
+import ray.math.Vec3;
 import ray.shading.Effect;
 import ray.shading.Shader;
 
@@ -16,7 +17,7 @@ import ray.shading.Shader;
  * ray.start &lt; t &lt; ray.end, and then fills the record (t, location, unit outward normal,
  * the primitive that was hit); on a miss it leaves the record untouched.
  */
-public abstract class Surface {
+public abstract class Surface implements Cloneable {
     private Shader shader;
 
     /**
@@ -111,6 +112,26 @@ public abstract class Surface {
      */
     public HitGeometry hitGeometry(IntersectionRecord hit) {
         return HitGeometry.atReportedPoint(hit);
+    }
+
+    /**
+     * This surface in coordinates whose origin is at {@code origin} of its own (every point p
+     * becomes p − origin), for rendering from the camera's frame ({@code Scene#inCameraFrame}).
+     * The framework's surfaces move their own numbers, subtracting once in double, so that rays
+     * from the camera meet numbers of the scene's size rather than of its distance from the origin;
+     * any other surface is placed by a translation, which is exact in meaning though not in accuracy.
+     */
+    public Surface inFrameAt(Vec3 origin) {
+        return new Transformed(this, Affine.translation(origin.negate()));
+    }
+
+    /** A shallow copy of this surface (same class, same fields), for {@link #inFrameAt} to change. */
+    protected final Surface copy() {
+        try {
+            return (Surface) clone();
+        } catch (CloneNotSupportedException e) {
+            throw new IllegalStateException(e);
+        }
     }
 
     @Override

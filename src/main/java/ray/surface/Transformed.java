@@ -7,6 +7,7 @@ import ray.Ray;
 import ray.accel.SearchCounter;
 import ray.math.Affine;
 import ray.math.Bounds;
+import ray.math.Vec3;
 import ray.shading.Effect;
 import ray.shading.Shader;
 
@@ -45,6 +46,12 @@ public final class Transformed extends Surface {
      */
     public Transformed placing(Surface other, boolean testBounds, SearchCounter counter) {
         return new Transformed(other, toWorld, toLocal, testBounds, counter);
+    }
+
+    /** The same placement, taken by a translation: the linear part stays, the translation moves by −origin (one rounding). */
+    @Override
+    public Surface inFrameAt(Vec3 origin) {
+        return new Transformed(surface, Affine.translation(origin.negate()).after(toWorld));
     }
 
     public Surface placed() {

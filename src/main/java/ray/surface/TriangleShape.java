@@ -139,6 +139,16 @@ public abstract class TriangleShape extends Surface {
         return this;
     }
 
+    /** The same triangle, vertex normals and texture coordinates with its vertices moved (normals do not move). */
+    @Override
+    public Surface inFrameAt(Vec3 origin) {
+        TriangleShape moved = (TriangleShape) copy();
+        moved.v0 = v0.minus(origin);
+        moved.v1 = v1.minus(origin);
+        moved.v2 = v2.minus(origin);
+        return moved.complete();
+    }
+
     /** The unit normal at barycentric coordinates (beta, gamma): the face normal, or the blend of vertex normals. */
     public Vec3 normalAt(double beta, double gamma) {
         if (n0 == null) {

@@ -2,6 +2,7 @@ package ray.trace;
 
 import ray.Ray;
 import ray.camera.Camera;
+import ray.math.Vec3;
 
 /**
  * One pixel of another camera's image as a whole 1×1 image: image point (u, v) of the crop is
@@ -21,6 +22,16 @@ final class CropCamera extends Camera {
         this.j = j;
         this.width = width;
         this.height = height;
+    }
+
+    @Override
+    public Vec3 getViewPoint() {
+        return camera.getViewPoint();
+    }
+
+    @Override
+    public Camera inFrameAt(Vec3 origin) {
+        return new CropCamera(camera.inFrameAt(origin), i, j, width, height);
     }
 
     @Override

@@ -76,7 +76,7 @@ public final class PixelTrace {
                         + " the value averages all " + value.samples));
         out.println(Fmt.row("  ", "rays", "1 camera ray per sample, " + value.shadowRays + " shadow, " + value.reflectionRays + " reflection"));
         out.println(Fmt.row("  ", "radiance", Fmt.vec(value.radiance) + "   (linear RGB, the renderer's result for this pixel)"));
-        if (value.samples == 1 && centerRadiance != null && !centerRadiance.equals(value.radiance)) {
+        if (value.samples == 1 && centerRadiance != null && !sameUpToRounding(centerRadiance, value.radiance)) {
             out.println(Fmt.row("  ", "!", "the trace computed " + Fmt.vec(centerRadiance) + " for the center ray; the renderer's"
                     + " value above is the one in the image"));
         }
@@ -85,6 +85,17 @@ public final class PixelTrace {
         out.println(Fmt.row("  ", "8-bit RGB", Fmt.rgb8(value.rgb8) + "   (clamp to [0, 1], x^(1/2.2), floor(255·x + ½)):"
                 + " the PNG's pixel at x = " + x + ", y = " + y));
         return value.rgb8;
+    }
+
+    /**
+     * Whether the trace's radiance is the renderer's but for rounding: the trace follows the scene in
+     * its own coordinates, the renderer from the camera's frame (ray.scene.CameraFrame), so the two
+     * may differ in the last digits, never by more than a billionth.
+     */
+    private static boolean sameUpToRounding(Vec3 traced, Vec3 rendered) {
+        return Math.abs(traced.x - rendered.x) <= 1e-9 * Math.max(1, Math.abs(rendered.x))
+                && Math.abs(traced.y - rendered.y) <= 1e-9 * Math.max(1, Math.abs(rendered.y))
+                && Math.abs(traced.z - rendered.z) <= 1e-9 * Math.max(1, Math.abs(rendered.z));
     }
 
     /** The camera ray, the surfaces, the closest hit and its shading; returns the ray's radiance, or null if it could not be computed. */

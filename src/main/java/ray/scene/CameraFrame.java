@@ -1,0 +1,78 @@
+package ray.scene;
+
+import ray.math.Vec3;
+import ray.shading.Light;
+import ray.shading.Shader;
+import ray.shading.Texture;
+import ray.surface.Group;
+import ray.surface.Surface;
+
+/**
+ * A scene moved so that its camera sits at the origin, which is how the renderer sees every scene
+ * (pbrt-v4 renders in such a "camera-world" space by default, for the same reason).
+ *
+ * <p>Why: a double carries about 16 digits of a coordinate's whole size, so a scene of size 1 placed
+ * 10¹² from the origin keeps only about 4 digits of its own detail in every hit point computed
+ * there, and the offsets that keep new rays off their surface must be sized to that error
+ * (HitGeometry's scale). Subtracting the camera's position once, in double, when the render
+ * starts turns each coordinate into its offset from the eye: the subtraction rounds once (and not
+ * at all where the two are within a factor of 2, by Sterbenz's lemma), and from then on rays
+ * start at the origin and hit points are as exact as the scene's size allows, wherever it sits.
+ * Directions, sizes, normals and texture coordinates do not change; lights move with the rest.
+ *
+ * <p>Every position moves: spheres' and cylinders' centers, triangles', boxes' and meshes'
+ * vertices, lights, and the translation of each placed group at the top (its contents stay in
+ * their own coordinates). Shaders and textures are shared with the original, which is left as it was.
+ */
+final class CameraFrame {
+    private CameraFrame() {
+    }
+
+    /** {@code scene} seen from a camera at the origin; the scene itself when its camera is already there. */
+    static Scene of(Scene scene) {
+        Vec3 eye = scene.getCamera().getViewPoint();
+        if (eye.x == 0 && eye.y == 0 && eye.z == 0) {
+            return scene;
+        }
+        Scene moved = new Scene();
+        moved.setName(scene.getName());
+        moved.setCamera(scene.getCamera().inFrameAt(eye));
+        moved.setImage(scene.getWidth(), scene.getHeight());
+        moved.setExposure(scene.getExposure());
+        moved.setBackColor(scene.getBackColor());
+        moved.setSamples(scene.getSamples());
+        for (Light light : scene.getLights()) {
+            moved.addLight(new Light(light.getPosition().minus(eye), light.getIntensity()));
+        }
+        for (Shader shader : scene.getShaders()) {
+            moved.addShader(shader);
+        }
+        for (Texture texture : scene.getTextures()) {
+            moved.addTexture(texture);
+        }
+        Group root = scene.getSurfaces();
+        moved.getSurfaces().setShader(root.getShader());
+        for (Surface child : root.children()) {
+            moved.addSurface(inFrameAt(child, eye));
+        }
+        // A rebuilt box or mesh has new triangles, which take its shader as the loaded ones did.
+        moved.complete();
+        return moved;
+    }
+
+    /**
+     * A surface in the frame at {@code origin}: a plain group by moving its children (Group is a
+     * student's file, so the framework moves it from outside), anything else by its own {@link Surface#inFrameAt}.
+     */
+    private static Surface inFrameAt(Surface surface, Vec3 origin) {
+        if (surface.getClass() != Group.class) {
+            return surface.inFrameAt(origin);
+        }
+        Group moved = new Group();
+        moved.setShader(surface.getShader());
+        for (Surface child : surface.children()) {
+            moved.addSurface(inFrameAt(child, origin));
+        }
+        return moved;
+    }
+}
