@@ -23,7 +23,10 @@ import ray.surface.Surface;
  */
 public final class RenderPlan {
 
+    /** The scene as rendered: {@link #written} seen from its camera's frame, unless {@link #withWorldFrame} asked otherwise. */
     private final Scene scene;
+    /** The scene as its file (or code) gave it. */
+    private final Scene written;
     private final int gridSide;
     private final SamplePattern pattern;
     private final long primitives;
@@ -44,6 +47,7 @@ public final class RenderPlan {
     private RenderPlan(Scene scene, int samplesPerPixel, SamplePattern pattern) {
         // Every render runs in the camera's frame: the same image, with hit points as exact as the
         // scene's size allows wherever the scene sits (CameraFrame).
+        this.written = scene;
         this.scene = scene.inCameraFrame();
         this.gridSide = Renderer.gridSide(samplesPerPixel);
         this.pattern = pattern;
@@ -105,6 +109,7 @@ public final class RenderPlan {
 
     /** A copy of {@code plan} with other offsets or window; the effects stay those of the scene. */
     private RenderPlan(RenderPlan plan, RayOffsets offsets, PixelWindow window, Acceleration acceleration) {
+        this.written = plan.written;
         this.scene = plan.scene;
         this.gridSide = plan.gridSide;
         this.pattern = plan.pattern;
@@ -118,6 +123,28 @@ public final class RenderPlan {
         if (acceleration == Acceleration.BVH && trees != null) {
             running.put(Effect.ACCELERATION, trees);
         }
+    }
+
+    /** A copy of {@code plan} that renders {@code scene} (the written scene or its camera frame). */
+    private RenderPlan(RenderPlan plan, Scene scene) {
+        this.written = plan.written;
+        this.scene = scene;
+        this.gridSide = plan.gridSide;
+        this.pattern = plan.pattern;
+        this.primitives = plan.primitives;
+        this.running.putAll(plan.running);
+        this.trees = plan.trees;
+        this.offsets = plan.offsets;
+        this.window = plan.window;
+        this.acceleration = plan.acceleration;
+    }
+
+    /**
+     * This plan rendering the scene in its own coordinates, as renderers did before the camera's
+     * frame (for showing what the frame buys far from the origin; renders use the camera's frame).
+     */
+    public RenderPlan withWorldFrame() {
+        return new RenderPlan(this, written);
     }
 
     /** This plan with secondary rays started by {@code rule} (for comparing the rules; renders use SCALED). */

@@ -24,7 +24,7 @@ import ray.surface.Surface;
  * vertices, lights, and the translation of each placed group at the top (its contents stay in
  * their own coordinates). Shaders and textures are shared with the original, which is left as it was.
  */
-final class CameraFrame {
+public final class CameraFrame {
     private CameraFrame() {
     }
 
@@ -34,6 +34,15 @@ final class CameraFrame {
         if (eye.x == 0 && eye.y == 0 && eye.z == 0) {
             return scene;
         }
+        return seenFrom(scene, eye);
+    }
+
+    /**
+     * {@code scene} in coordinates whose origin is its point {@code eye}: every position p becomes
+     * p − eye, by the rules above. (With −T for {@code eye}, the scene moved by T, as the numerics
+     * tests move scenes far from the origin.)
+     */
+    public static Scene seenFrom(Scene scene, Vec3 eye) {
         Scene moved = new Scene();
         moved.setName(scene.getName());
         moved.setCamera(scene.getCamera().inFrameAt(eye));
