@@ -219,8 +219,9 @@ public final class NumericsFigures {
     /**
      * A sphere on a ground of two triangles, at the origin and moved by (1e12, 1e12, 1e12), with
      * shadow rays from the hit point with t_min = 0, from it with a fixed t_min of 1e-6, and from
-     * the framework's offset. Intersection is the solution's in every panel. Counted: pixels more
-     * than 2 levels off the framework's render at the origin.
+     * the framework's offset, in the scene's own coordinates; and the framework's offset from the
+     * camera's frame, as the renderer works. Intersection is the solution's in every panel.
+     * Counted: pixels more than 2 levels off the framework's render at the origin.
      */
     static void acne(Path folder) throws IOException {
         Scene atOrigin = sphereOnPlane(Vec3.ZERO);
@@ -231,18 +232,19 @@ public final class NumericsFigures {
             throw new IllegalStateException("the figures' pixel loop no longer matches the renderer");
         }
         List<Reintersection.Spawner> spawners = List.of(Reintersection.NO_OFFSET, Reintersection.fixedStart(1e-6), Reintersection.FRAMEWORK);
-        String[] names = {"t_min 0", "fixed t_min 1e-6", "framework offset"};
-        FigureSheet sheet = new FigureSheet(3);
+        String[] names = {"t_min 0", "fixed t_min 1e-6", "framework offset", "camera's frame"};
+        FigureSheet sheet = new FigureSheet(4);
         for (double translate : new double[] {0, 1e10, 1e11, 1e12}) {
             Scene scene = sphereOnPlane(new Vec3(translate, translate, translate));
             String where = translate == 0 ? "origin" : String.format(Locale.ROOT, "%.0e", translate).replace("e+", "e");
             System.out.printf("Figure 2 (acne), at %s, px off the framework's render at the origin:", where);
-            for (int s = 0; s < spawners.size(); s++) {
-                BufferedImage picture = render(scene, spawners.get(s));
+            for (int s = 0; s < names.length; s++) {
+                boolean cameraFrame = s == spawners.size();
+                BufferedImage picture = cameraFrame ? render(scene.inCameraFrame(), Reintersection.FRAMEWORK) : render(scene, spawners.get(s));
                 int off = FigureSheet.differing(reference, picture, 2);
                 System.out.printf(Locale.ROOT, " %s %d (%.1f%%);", names[s], off, 100.0 * off / (WIDTH * HEIGHT));
                 if (translate == 0 || translate == 1e12) {
-                    String caption = spawners.get(s) == Reintersection.FRAMEWORK && translate == 0
+                    String caption = s == 2 && translate == 0
                             ? where + ", " + names[s] + " (reference)" : String.format(Locale.ROOT, "%s, %s: %,d px off", where, names[s], off);
                     sheet.add(picture, caption);
                 }
