@@ -46,13 +46,6 @@ public abstract class CylinderShape extends Surface {
         return value;
     }
 
-    /**
-     * The hit put back on the part of the surface its normal names: onto the side at distance
-     * {@code radius} from the axis, or into a cap's plane, as the sphere's hit is re-projected
-     * (Ray Tracing Gems ch. 6), so that new rays start on the surface to the rounding of its own
-     * numbers. The scale is that of the numbers the point is computed from: the center, the
-     * radius and the height.
-     */
     @Override
     public Surface inFrameAt(Vec3 origin) {
         CylinderShape moved = (CylinderShape) copy();
@@ -60,6 +53,13 @@ public abstract class CylinderShape extends Surface {
         return moved;
     }
 
+    /**
+     * The hit put back on the part of the surface its normal names: onto the side at distance
+     * {@code radius} from the axis, or into a cap's plane, as the sphere's hit is re-projected
+     * (Ray Tracing Gems ch. 6), so that new rays start on the surface to the rounding of its own
+     * numbers. The scale is that of the numbers the point is computed from: the center, the
+     * radius and the height.
+     */
     @Override
     public HitGeometry hitGeometry(IntersectionRecord hit) {
         Vec3 p = hit.location;
