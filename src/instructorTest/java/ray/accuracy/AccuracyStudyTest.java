@@ -40,7 +40,7 @@ public class AccuracyStudyTest {
         assertEquals(6, study.runs("samples").size());
         assertEquals(List.of("double", "float", "float, double's offsets"), labels(study.runs("arithmetic")));
         assertEquals(List.of("robust", "textbook"), labels(study.runs("intersection")));
-        assertEquals(List.of("offset scaled", "offset fixed 1e-6", "offset none"), labels(study.runs("offsets")));
+        assertEquals(List.of("offset scaled", "offset error bound", "offset fixed 1e-6", "offset none"), labels(study.runs("offsets")));
         assertEquals("one log line per setting and one for the reference", study.runs.size() + 1, log.size());
     }
 
@@ -84,6 +84,7 @@ public class AccuracyStudyTest {
         assertNotNull(none.defectMap);
         assertEquals(48, none.defectMap.getWidth());
         assertTrue(none.error.rmse > study.run("offset scaled").error.rmse);
+        assertEquals("the error-bound offset leaves no acne with the solution's code", 0, study.run("offset error bound").defects, 0);
         assertEquals("float with double's offsets: acne too", true, study.run("float, double's offsets").defects > 0.05);
         assertTrue("float with float's offsets: " + study.run("float").defects, study.run("float").defects < 0.01);
     }

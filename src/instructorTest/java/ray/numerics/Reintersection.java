@@ -9,6 +9,7 @@ import java.util.Random;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.render.RayOffsets;
 import ray.render.SecondaryRays;
 import ray.surface.Group;
 import ray.surface.HitGeometry;
@@ -66,6 +67,45 @@ final class Reintersection {
             return "framework (" + (int) SecondaryRays.OFFSET_ULPS + " eps scale)";
         }
     };
+
+    /** pbrt-v4's rule: off the re-projected hit by its own error bound ({@link RayOffsets#ERROR_BOUND}). */
+    static final Spawner ERROR_BOUND = new Spawner() {
+        @Override
+        public Ray leaving(IntersectionRecord hit, HitGeometry g, Vec3 direction) {
+            return RayOffsets.ERROR_BOUND.reflectionRay(g, direction);
+        }
+
+        @Override
+        public Ray toLight(IntersectionRecord hit, HitGeometry g, Vec3 lightPosition) {
+            return RayOffsets.ERROR_BOUND.shadowRay(g, lightPosition);
+        }
+
+        @Override
+        public String toString() {
+            return "error bound";
+        }
+    };
+
+    /** The error-bound rule with the offset {@code multiple} times the bound. */
+    static Spawner errorBound(double multiple) {
+        return new Spawner() {
+            @Override
+            public Ray leaving(IntersectionRecord hit, HitGeometry g, Vec3 direction) {
+                return new Ray(SecondaryRays.errorBoundOrigin(g, direction, multiple), direction);
+            }
+
+            @Override
+            public Ray toLight(IntersectionRecord hit, HitGeometry g, Vec3 lightPosition) {
+                Vec3 origin = SecondaryRays.errorBoundOrigin(g, lightPosition.minus(g.point), multiple);
+                return new Ray(origin, lightPosition.minus(origin), 0, SecondaryRays.SHADOW_END);
+            }
+
+            @Override
+            public String toString() {
+                return (long) multiple + " x error bound";
+            }
+        };
+    }
 
     /** From the hit point itself with t_min = 0: the textbook's first attempt. */
     static final Spawner NO_OFFSET = fixedStart(0);

@@ -32,15 +32,15 @@ public final class ReintersectionSweep {
                 surfaces, raysPerHit, raysPerHit);
         System.out.println("Solution's intersection code:\n");
         table(List.of(Reintersection.NO_OFFSET, Reintersection.fixedStart(1e-6), Reintersection.fixedStart(1e-3),
-                Reintersection.RELATIVE_1E9, Reintersection.FRAMEWORK), false, surfaces, raysPerHit);
+                Reintersection.RELATIVE_1E9, Reintersection.FRAMEWORK, Reintersection.ERROR_BOUND), false, surfaces, raysPerHit);
         System.out.println("\nThe renderer's offset with other multiples K of eps*scale (the renderer uses "
                 + (long) SecondaryRays.OFFSET_ULPS + "):\n");
         table(List.of(Reintersection.geometryOffset(1), Reintersection.geometryOffset(2), Reintersection.geometryOffset(4),
                 Reintersection.geometryOffset(16), Reintersection.FRAMEWORK, Reintersection.geometryOffset(1 << 20),
                 Reintersection.geometryOffset(1 << 24)), false, surfaces, raysPerHit);
         System.out.println("\nTextbook intersection code (quadratic sphere without re-projection, Cramer's-rule triangle):\n");
-        table(List.of(Reintersection.NO_OFFSET, Reintersection.fixedStart(1e-6), Reintersection.RELATIVE_1E9, Reintersection.FRAMEWORK),
-                true, surfaces, raysPerHit);
+        table(List.of(Reintersection.NO_OFFSET, Reintersection.fixedStart(1e-6), Reintersection.RELATIVE_1E9, Reintersection.FRAMEWORK,
+                Reintersection.ERROR_BOUND, Reintersection.errorBound(16), Reintersection.errorBound(64)), true, surfaces, raysPerHit);
         System.out.println("\nFar from the origin: sizes 10^U(0, 3) at 10^U(11.5, 12.5) from it (solution's code):\n");
         StringBuilder header = new StringBuilder("| case |");
         List<Spawner> far = List.of(Reintersection.NO_OFFSET, Reintersection.fixedStart(1e-6), Reintersection.fixedStart(1e-3),

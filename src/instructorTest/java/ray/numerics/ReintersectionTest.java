@@ -66,6 +66,14 @@ public class ReintersectionTest {
         assertEquals(kind + " (textbook intersection): " + tally, 0, tally.rehits());
     }
 
+    /** pbrt-v4's error-bound offset is enough for the solution's own (robust) intersection code. */
+    @Test
+    public void errorBoundRaysNeverReHitTheSolutionsSurfaces() {
+        Tally tally = Reintersection.run(kind, Reintersection.ERROR_BOUND, false, 10, SURFACES, RAYS_PER_HIT);
+        assertTrue("too few rays ran: " + tally, tally.rays() >= SURFACES * RAYS_PER_HIT * 9 / 10);
+        assertEquals(kind + " (error-bound offset): " + tally, 0, tally.rehits());
+    }
+
     @Test
     public void raysWithoutAnOffsetOftenReHit() {
         Tally tally = Reintersection.run(kind, Reintersection.NO_OFFSET, false, 9, SURFACES / 4, RAYS_PER_HIT);

@@ -32,11 +32,11 @@ public final class Sweeps {
                 settings, false);
     }
 
-    /** The framework's scaled offsets against none and a fixed epsilon. */
+    /** The framework's scaled offsets against pbrt's error-bound offsets, none and a fixed epsilon. */
     public static Sweep offsets() {
         return new Sweep("offsets", "Where do shadow and reflection rays start: what does each rule cost, and where does it leave acne?",
-                List.of(Setting.offsets("offset scaled", RayOffsets.SCALED), Setting.offsets("offset fixed 1e-6", RayOffsets.FIXED),
-                        Setting.offsets("offset none", RayOffsets.NONE)), true);
+                List.of(Setting.offsets("offset scaled", RayOffsets.SCALED), Setting.offsets("offset error bound", RayOffsets.ERROR_BOUND),
+                        Setting.offsets("offset fixed 1e-6", RayOffsets.FIXED), Setting.offsets("offset none", RayOffsets.NONE)), true);
     }
 
     /**

@@ -47,6 +47,37 @@ public final class Affine {
         }
     }
 
+    /**
+     * A bound, per coordinate, on the error of {@code applyToPoint(p)} for a point p known within
+     * {@code error} per coordinate: each output coordinate Σ_j m_ij·p_j + b_i is three products and
+     * three sums, so γ(3)·(Σ_j |m_ij·p_j| + |b_i|) of its own rounding, plus (1 + γ(3))·Σ_j |m_ij|·error_j
+     * carried from the input (pbrt-v4's transform of a point with error, §6.8.5).
+     */
+    public Vec3 pointError(Vec3 p, Vec3 error) {
+        double g3 = 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
+        double[] in = {p.x, p.y, p.z};
+        double[] err = {error.x, error.y, error.z};
+        double[] bs = {b.x, b.y, b.z};
+        double[] out = new double[3];
+        for (int r = 0; r < 3; r++) {
+            double own = Math.abs(bs[r]);
+            double carried = 0;
+            for (int c = 0; c < 3; c++) {
+                own += Math.abs(a[3 * r + c] * in[c]);
+                carried += Math.abs(a[3 * r + c]) * err[c];
+            }
+            out[r] = g3 * own + (1 + g3) * carried;
+        }
+        return new Vec3(out[0], out[1], out[2]);
+    }
+
+    /** |M|·v: how far a displacement of at most v_j per coordinate can move a point through this map, per coordinate. */
+    public Vec3 linearBound(Vec3 v) {
+        return new Vec3(Math.abs(a[0]) * v.x + Math.abs(a[1]) * v.y + Math.abs(a[2]) * v.z,
+                Math.abs(a[3]) * v.x + Math.abs(a[4]) * v.y + Math.abs(a[5]) * v.z,
+                Math.abs(a[6]) * v.x + Math.abs(a[7]) * v.y + Math.abs(a[8]) * v.z);
+    }
+
     /** The map "first {@code inner}, then this". */
     public Affine after(Affine inner) {
         double[] m = new double[9];

@@ -27,7 +27,13 @@ public enum RayOffsets {
      * test rounds a new ray's origin to float, which moves it by up to 2⁻²⁴ of its coordinates,
      * so double-sized offsets leave it on either side of the surface.
      */
-    SCALED_FOR_FLOAT("scaled for float");
+    SCALED_FOR_FLOAT("scaled for float"),
+    /**
+     * pbrt-v4's rule: off the re-projected hit by the bound on its own error ({@link ray.surface.HitGeometry#error}),
+     * no more: the smallest offset that puts the origin on the right side of the surface, which does
+     * not cover the error of a textbook intersection test of the new ray.
+     */
+    ERROR_BOUND("error bound");
 
     // The rules are switches rather than constant-specific bodies: a constant with a body compiles
     // to a sealed enum with subclasses, a class file that Debian's Gradle 4.4 reports as malformed
@@ -55,6 +61,8 @@ public enum RayOffsets {
                 return new Ray(g.location, d, FIXED_EPSILON / d.length(), SecondaryRays.SHADOW_END);
             case SCALED:
                 return SecondaryRays.shadowRay(g, lightPosition);
+            case ERROR_BOUND:
+                return SecondaryRays.errorBoundShadowRay(g, lightPosition);
             default:
                 return SecondaryRays.shadowRay(g, lightPosition, FLOAT_EPSILON);
         }
@@ -69,6 +77,8 @@ public enum RayOffsets {
                 return new Ray(g.location, direction, FIXED_EPSILON / direction.length(), Double.POSITIVE_INFINITY);
             case SCALED:
                 return SecondaryRays.reflectionRay(g, direction);
+            case ERROR_BOUND:
+                return SecondaryRays.errorBoundReflectionRay(g, direction);
             default:
                 return SecondaryRays.reflectionRay(g, direction, FLOAT_EPSILON);
         }

@@ -67,6 +67,43 @@ public final class SecondaryRays {
         return g.point.plusScaled(g.normal.dot(direction) >= 0 ? offset : -offset, g.normal);
     }
 
+    /**
+     * The hit point pushed off the surface by its own error bound (pbrt-v4's {@code OffsetRayOrigin},
+     * §6.8.6): d = |n|·error along the geometric normal, toward {@code direction}'s side, and each
+     * coordinate then rounded one double further away, so that the sum's own rounding cannot bring
+     * it back. As small as the point's error allows, it does not cover the error of the new ray's
+     * own test, which the scaled rule's 1024 ulps do for textbook code.
+     */
+    static Vec3 errorBoundOrigin(HitGeometry g, Vec3 direction) {
+        return errorBoundOrigin(g, direction, 1);
+    }
+
+    /** The same, {@code multiple} times as far (for measuring the margin a textbook test needs). */
+    public static Vec3 errorBoundOrigin(HitGeometry g, Vec3 direction, double multiple) {
+        Vec3 n = g.normal;
+        double d = multiple * (Math.abs(n.x) * g.error.x + Math.abs(n.y) * g.error.y + Math.abs(n.z) * g.error.z);
+        if (n.dot(direction) < 0) {
+            d = -d;
+        }
+        Vec3 o = g.point.plusScaled(d, n);
+        return new Vec3(awayFrom(o.x, d * n.x), awayFrom(o.y, d * n.y), awayFrom(o.z, d * n.z));
+    }
+
+    private static double awayFrom(double x, double offset) {
+        return offset > 0 ? Math.nextUp(x) : offset < 0 ? Math.nextDown(x) : x;
+    }
+
+    /** The shadow ray of the error-bound rule ({@link #errorBoundOrigin}). */
+    static Ray errorBoundShadowRay(HitGeometry g, Vec3 lightPosition) {
+        Vec3 origin = errorBoundOrigin(g, lightPosition.minus(g.point));
+        return new Ray(origin, lightPosition.minus(origin), 0, SHADOW_END);
+    }
+
+    /** The reflection ray of the error-bound rule. */
+    static Ray errorBoundReflectionRay(HitGeometry g, Vec3 direction) {
+        return new Ray(errorBoundOrigin(g, direction), direction);
+    }
+
     /** The segment from just off the hit to just short of the light: r(t) for 0 < t < SHADOW_END. */
     public static Ray shadowRay(HitGeometry g, Vec3 lightPosition) {
         return shadowRay(g, lightPosition, EPSILON);

@@ -67,14 +67,23 @@ public abstract class CylinderShape extends Surface {
         double scale = center.maxAbs() + radius + height;
         if (Math.abs(normal.y) > 0.5) {
             double capY = normal.y > 0 ? center.y + height : center.y;
-            return new HitGeometry(p, new Vec3(p.x, capY, p.z), normal, scale);
+            // In the cap's plane to one rounding of its height; x and z only slide the point within it.
+            double rounding = HitGeometry.gamma(1);
+            Vec3 error = new Vec3(rounding * Math.abs(p.x), rounding * Math.abs(capY), rounding * Math.abs(p.z));
+            return new HitGeometry(p, new Vec3(p.x, capY, p.z), normal, scale, error);
         }
         Vec3 radial = new Vec3(p.x - center.x, 0, p.z - center.z).normalized();
         if (!(radial.lengthSquared() > 0)) {
-            return new HitGeometry(p, p, normal, scale); // on the axis: no direction to re-project along
+            // On the axis: no direction to re-project along, so nothing better than the reported point.
+            return HitGeometry.atReportedPoint(hit);
         }
         Vec3 point = new Vec3(center.x + radius * radial.x, p.y, center.z + radius * radial.z);
-        return new HitGeometry(p, point, normal, scale);
+        // As a sphere's, in x and z: |radial| = 1 within γ(5), and one rounding of each coordinate.
+        double radialError = HitGeometry.gamma(6) * radius;
+        double rounding = HitGeometry.gamma(1);
+        Vec3 error = new Vec3(radialError * Math.abs(radial.x) + rounding * Math.abs(point.x), rounding * Math.abs(point.y),
+                radialError * Math.abs(radial.z) + rounding * Math.abs(point.z));
+        return new HitGeometry(p, point, normal, scale, error);
     }
 
     /** From the bottom cap's square to the top cap's. */

@@ -34,21 +34,39 @@ public final class HitGeometry {
     public final Vec3 point;
     public final Vec3 normal;
     public final double scale;
+    /**
+     * A bound, per coordinate, on how far {@link #point} may be from the exact point of the surface
+     * it stands for (the surface of the primitive's own numbers): pbrt-v4's {@code pError}, the sum
+     * of the γ(n)·|x| terms of the operations that computed it (γ(n) = nε/(1 − nε), ε = 2⁻⁵³),
+     * through every transform. The error-bound offset ({@code RayOffsets.ERROR_BOUND}) starts new
+     * rays |n|·error along the normal.
+     */
+    public final Vec3 error;
 
-    public HitGeometry(Vec3 location, Vec3 point, Vec3 normal, double scale) {
+    public HitGeometry(Vec3 location, Vec3 point, Vec3 normal, double scale, Vec3 error) {
         this.location = location;
         this.point = point;
         this.normal = normal;
         this.scale = scale;
+        this.error = error;
     }
 
     /** The geometry of a hit on a surface that knows nothing more of its shape: the reported point and normal. */
     public static HitGeometry atReportedPoint(IntersectionRecord hit) {
-        return new HitGeometry(hit.location, hit.location, hit.normal, hit.location.maxAbs());
+        double scale = hit.location.maxAbs();
+        // Nothing bounds a reported point's error but the test that found it; take that of the scale rule.
+        double guess = 1024 * 0x1p-53 * scale;
+        return new HitGeometry(hit.location, hit.location, hit.normal, scale, new Vec3(guess, guess, guess));
+    }
+
+    /** γ(n) = nε/(1 − nε), ε = 2⁻⁵³: the bound on the relative error of n rounded operations (Higham, §3.1). */
+    public static double gamma(int n) {
+        double ne = n * 0x1p-53;
+        return ne / (1 - ne);
     }
 
     @Override
     public String toString() {
-        return "HitGeometry[point " + point + ", normal " + normal + ", scale " + scale + "]";
+        return "HitGeometry[point " + point + ", normal " + normal + ", scale " + scale + ", error " + error + "]";
     }
 }

@@ -97,12 +97,17 @@ public final class Placements {
         Vec3 point = g.point;
         Vec3 normal = g.normal;
         double scale = g.scale;
+        Vec3 error = g.error;
         for (int i = path.size() - 1; i >= 0; i--) {
             Level level = path.get(i);
+            error = level.toWorld.pointError(point, error);
             point = level.toWorld.applyToPoint(point);
+            // A new ray from here is mapped back in before its test, which rounds its origin again:
+            // that error, seen from out here, is |M| times the inverse map's own rounding.
+            error = error.plus(level.toWorld.linearBound(level.toLocal.pointError(point, Vec3.ZERO)).times(1 + HitGeometry.gamma(3)));
             normal = level.toLocal.applyTransposeToVector(normal).normalized();
             scale = level.toWorld.pointScale(scale);
         }
-        return new HitGeometry(hit.location, point, normal, scale);
+        return new HitGeometry(hit.location, point, normal, scale, error);
     }
 }

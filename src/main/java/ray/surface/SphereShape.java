@@ -48,7 +48,16 @@ public abstract class SphereShape extends Surface {
             outward = reported;
         }
         Vec3 normal = Math.abs(reported.dot(outward)) > 0.5 ? reported : outward;
-        return new HitGeometry(p, center.plusScaled(radius, outward), normal, center.maxAbs() + radius);
+        Vec3 point = center.plusScaled(radius, outward);
+        // |outward| = 1 within γ(5) (a difference, a dot product, a square root and a division), which
+        // moves the point radially by up to γ(5)·radius·|outward_i| per coordinate; adding the center
+        // rounds each coordinate once more. (The direction's own error only slides the point along the sphere.)
+        double radial = HitGeometry.gamma(6) * radius;
+        double rounding = HitGeometry.gamma(1);
+        Vec3 error = new Vec3(radial * Math.abs(outward.x) + rounding * Math.abs(point.x),
+                radial * Math.abs(outward.y) + rounding * Math.abs(point.y),
+                radial * Math.abs(outward.z) + rounding * Math.abs(point.z));
+        return new HitGeometry(p, point, normal, center.maxAbs() + radius, error);
     }
 
     @Override

@@ -179,7 +179,16 @@ public abstract class TriangleShape extends Surface {
         double thinness = longest / e1.cross(e2).length();
         thinness = thinness <= HitGeometry.MAX_THINNESS ? thinness : HitGeometry.MAX_THINNESS;
         // p − ((p − v0)·n) n: the hit on the triangle's plane, wherever the ray that found it came from.
-        return new HitGeometry(p, p.plusScaled(-p.minus(v0).dot(n), n), n, coordinates * thinness);
+        Vec3 point = p.plusScaled(-p.minus(v0).dot(n), n);
+        // Off the plane by: |p − v0| times the normal's angle error, γ(6)·thinness (edges rounded, a
+        // cross product of nearly parallel edges, a normalization), plus γ(4)·|p − v0| for the dot
+        // product, along n; and one rounding of each coordinate of the result.
+        double offPlane = p.minus(v0).length() * (HitGeometry.gamma(6) * thinness + HitGeometry.gamma(4));
+        double rounding = HitGeometry.gamma(2);
+        Vec3 error = new Vec3(offPlane * Math.abs(n.x) + rounding * Math.abs(point.x),
+                offPlane * Math.abs(n.y) + rounding * Math.abs(point.y),
+                offPlane * Math.abs(n.z) + rounding * Math.abs(point.z));
+        return new HitGeometry(p, point, n, coordinates * thinness, error);
     }
 
     @Override

@@ -33,8 +33,9 @@ public class SweepsTest {
         Sweep sweep = Sweeps.offsets();
         assertTrue(sweep.hasBaseline);
         assertEquals(RayOffsets.SCALED, sweep.baseline().offsets);
-        assertEquals(RayOffsets.FIXED, sweep.settings.get(1).offsets);
-        assertEquals(RayOffsets.NONE, sweep.settings.get(2).offsets);
+        assertEquals(RayOffsets.ERROR_BOUND, sweep.settings.get(1).offsets);
+        assertEquals(RayOffsets.FIXED, sweep.settings.get(2).offsets);
+        assertEquals(RayOffsets.NONE, sweep.settings.get(3).offsets);
         for (Setting s : sweep.settings) {
             assertEquals("at the scene's own samples", 0, s.samples);
         }
