@@ -8,6 +8,7 @@ import ray.surface.Sphere;
 import ray.surface.Surface;
 import ray.surface.Transformed;
 import ray.surface.Triangle;
+import ray.surface.TriangleSet;
 
 /**
  * Scenes whose spheres or triangles intersect by a textbook method ({@link TextbookSphere},
@@ -44,9 +45,10 @@ public final class TextbookSurfaces {
             Transformed t = (Transformed) surface;
             return new Transformed(replaceLeaves(t.children().get(0), leaf), t.toWorld());
         }
-        if (surface instanceof Group) {
-            // Any group (a mesh, a box): its children in a plain group. A group's own transform is
-            // not in the group but in the Transformed around it, which is kept above.
+        if (surface instanceof Group || surface instanceof TriangleSet) {
+            // Any group, and a box's or a mesh's triangles: its children in a plain group (so a
+            // mesh is searched by a linear loop here, which changes the time, not the image). A
+            // group's own transform is not in the group but in the Transformed around it, kept above.
             Group copy = new Group();
             for (Surface child : surface.children()) {
                 copy.addSurface(replaceLeaves(child, leaf));
