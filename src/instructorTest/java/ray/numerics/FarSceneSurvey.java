@@ -9,8 +9,8 @@ import ray.math.Vec3;
 /**
  * The table behind docs/numerics.md's "far from the origin": shipped scenes with contact shadows
  * moved by 10⁶ … 10¹² ({@link FarScenes}) or scaled by 10⁻⁴ and 10⁴ ({@link MovedScenes}),
- * rendered in the scene's own coordinates (before) and from the camera's frame (now), each
- * compared with the same scene unmoved: pixels more than 2 levels off. Run with the test classpath.
+ * rendered in the scene's own coordinates (before) and from the camera's frame (now), with the
+ * solution's intersection and with textbook intersection, each compared with the same scene unmoved: pixels more than 2 levels off. Run with the test classpath.
  */
 public final class FarSceneSurvey {
     private FarSceneSurvey() {
@@ -31,19 +31,31 @@ public final class FarSceneSurvey {
         System.out.println("| --- | --- |" + " ---: |".repeat(distances.length + scales.length));
         for (String scene : List.of("two-boxes", "glazed-sphere", "mesh-smooth")) {
             BufferedImage original = FarScenes.render(FarScenes.load(scene, Vec3.ZERO, shrink));
-            for (boolean world : new boolean[] {true, false}) {
-                StringBuilder row = new StringBuilder("| " + scene + " | " + (world ? "scene's own (before)" : "camera's (now)") + " |");
+            BufferedImage textbookOriginal = FarScenes.renderTextbook(FarScenes.load(scene, Vec3.ZERO, shrink), false);
+            for (int variant = 0; variant < 4; variant++) {
+                boolean world = variant % 2 == 0;
+                boolean textbook = variant >= 2;
+                String frame = world ? "scene's own (before)" : "camera's (now)";
+                StringBuilder row = new StringBuilder("| " + scene + " | " + (textbook ? "textbook, " : "") + frame + " |");
+                BufferedImage base = textbook ? textbookOriginal : original;
                 for (double d : distances) {
                     var moved = FarScenes.load(scene, new Vec3(d, d, d), shrink);
-                    row.append(' ').append(cell(original, world ? FarScenes.renderInWorldFrame(moved) : FarScenes.render(moved))).append(" |");
+                    row.append(' ').append(cell(base, render(moved, world, textbook))).append(" |");
                 }
                 for (double s : scales) {
                     var scaled = MovedScenes.load(scene, s, Vec3.ZERO, shrink);
-                    row.append(' ').append(cell(original, world ? FarScenes.renderInWorldFrame(scaled) : FarScenes.render(scaled))).append(" |");
+                    row.append(' ').append(cell(base, render(scaled, world, textbook))).append(" |");
                 }
                 System.out.println(row);
             }
         }
+    }
+
+    private static BufferedImage render(ray.scene.Scene scene, boolean world, boolean textbook) {
+        if (textbook) {
+            return FarScenes.renderTextbook(scene, world);
+        }
+        return world ? FarScenes.renderInWorldFrame(scene) : FarScenes.render(scene);
     }
 
     private static String cell(BufferedImage expected, BufferedImage actual) {

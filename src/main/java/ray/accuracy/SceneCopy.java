@@ -6,12 +6,12 @@ import ray.shading.Shader;
 import ray.surface.Surface;
 
 /** Copies of a loaded scene that differ in one part, for rendering the same scene several ways. */
-final class SceneCopy {
+public final class SceneCopy {
     private SceneCopy() {
     }
 
     /** {@code scene} with {@code root} as its only surface; camera, image, lights and settings shared. */
-    static Scene withSurfaces(Scene scene, Surface root) {
+    public static Scene withSurfaces(Scene scene, Surface root) {
         Scene copy = new Scene();
         copy.setName(scene.getName());
         copy.setCamera(scene.getCamera());
