@@ -20,10 +20,14 @@ import picocli.CommandLine.Option;
  *
  * <p>A submission is graded task by task: the tests of task N run on a fresh copy of the
  * instructor's tree in which only task N's files are the student's. So a broken sphere costs the
- * sphere's points and nothing else, and no test needs its own copy of the solution. Before that,
- * all the student's files together must compile; a submission that does not compile scores 0,
- * with the compiler's messages as the output. Without a submission, the instructor's own tree is
+ * sphere's points and nothing else, and no test needs its own copy of the solution. That holds for
+ * a file that does not compile too: a missing brace in Triangle.java fails Task 3's tests, with the
+ * compiler's messages, and no other task's. Without a submission, the instructor's own tree is
  * graded (it should score full marks, and every bonus point on top).
+ *
+ * <p>Each run works in a folder of its own under {@code --out} (removed afterwards), so runs at once
+ * never meet; and it always writes results.json, with a score of 0 and the reason when the grader
+ * itself fails (say, a submission path that does not exist), never leaving an earlier result in place.
  */
 @Command(name = "grade", mixinStandardHelpOptions = true, description = "Grades the instructor tree or a submission.")
 public final class Grader implements Callable<Integer> {
@@ -46,18 +50,33 @@ public final class Grader implements Callable<Integer> {
         System.exit(new CommandLine(new Grader()).execute(args));
     }
 
+    /** This run's own work folder under {@code out}. */
+    private Path work;
+
     @Override
     public Integer call() throws Exception {
         long start = System.nanoTime();
         StringBuilder output = new StringBuilder();
-        List<TestOutcome> outcomes = submission == null ? gradeInstructorTree() : gradeSubmission(output);
+        List<TestOutcome> outcomes;
+        Path resultsFile = out.resolve("results.json");
+        try {
+            Files.createDirectories(out);
+            work = Files.createTempDirectory(out, "work-");
+            outcomes = submission == null ? gradeInstructorTree() : gradeSubmission(output);
+        } catch (Exception | Error e) {
+            // Whatever went wrong, the platform reads a result: 0 points and why, not an earlier student's file.
+            String why = "The autograder could not grade this submission: " + (e.getMessage() == null ? e.toString() : e.getMessage());
+            writeResults(GradescopeResults.of(List.of(), output + why + "\n", (System.nanoTime() - start) / 1e9), resultsFile);
+            System.err.println("error: " + why);
+            return 1;
+        } finally {
+            if (work != null) {
+                ProjectTree.deleteRecursively(work);
+            }
+        }
         double seconds = (System.nanoTime() - start) / 1e9;
         Map<String, Object> results = GradescopeResults.of(outcomes, output.toString(), seconds);
-        Path resultsFile = out.resolve("results.json");
-        GradescopeResults.write(results, resultsFile);
-        if (resultsCopy != null) {
-            GradescopeResults.write(results, resultsCopy);
-        }
+        writeResults(results, resultsFile);
         System.out.print(output);
         System.out.print(GradescopeResults.table(outcomes));
         for (TestOutcome t : outcomes) {
@@ -69,8 +88,15 @@ public final class Grader implements Callable<Integer> {
         return 0;
     }
 
+    private void writeResults(Map<String, Object> results, Path resultsFile) throws IOException {
+        GradescopeResults.write(results, resultsFile);
+        if (resultsCopy != null) {
+            GradescopeResults.write(results, resultsCopy);
+        }
+    }
+
     private List<TestOutcome> gradeInstructorTree() throws IOException, InterruptedException {
-        Path tree = ProjectTree.copy(project, out.resolve("work/instructor"), Map.of());
+        Path tree = ProjectTree.copy(project, work.resolve("instructor"), Map.of());
         CompileResult compiled = compile(tree);
         if (!compiled.ok()) {
             throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
@@ -80,7 +106,6 @@ public final class Grader implements Callable<Integer> {
 
     private List<TestOutcome> gradeSubmission(StringBuilder output) throws IOException, InterruptedException {
         Map<String, Integer> studentFiles = StudentFiles.in(project);
-        Path work = out.resolve("work");
         Submission handedIn = Submission.locate(submission, studentFiles.keySet(), work.resolve("submission"));
         Map<String, Path> overlay = new LinkedHashMap<>(handedIn.files);
         describe(handedIn, output);
@@ -91,12 +116,6 @@ public final class Grader implements Callable<Integer> {
             String solution = Files.readString(project.resolve(missing), StandardCharsets.UTF_8);
             Files.writeString(stub, SolutionMarkers.studentVersion(solution, missing), StandardCharsets.UTF_8);
             overlay.put(missing, stub);
-        }
-        Path whole = ProjectTree.copy(project, work.resolve("whole"), overlay);
-        CompileResult compiled = compile(whole);
-        if (!compiled.ok()) {
-            output.append("Your code does not compile, so no test could run:\n").append(compiled.messages());
-            return allFailed(null, "does not compile:\n" + compiled.messages());
         }
         List<TestOutcome> outcomes = new ArrayList<>();
         for (int task : new TreeSet<>(studentFiles.values())) {
@@ -109,10 +128,13 @@ public final class Grader implements Callable<Integer> {
             Path tree = ProjectTree.copy(project, work.resolve("task-" + task), taskFiles);
             CompileResult taskCompiled = compile(tree);
             if (!taskCompiled.ok()) {
-                // Task N's files compile with the student's other files but not with the solution's:
-                // they depend on changes made elsewhere.
-                outcomes.addAll(allFailed(task, "task " + task + "'s files do not compile on their own (do they use"
-                        + " something you changed in another task's file?):\n" + taskCompiled.messages()));
+                // Only this task's tests fail: each other task is graded with its own files, which may compile.
+                String files = String.join(", ", taskFiles.keySet());
+                String why = "Task " + task + "'s files (" + files + ") do not compile with the rest of the handout, so its"
+                        + " tests could not run; the other tasks are graded on their own. (If they compile in your project,"
+                        + " do they use something you changed in another task's file?)\n" + taskCompiled.messages();
+                output.append(why).append('\n');
+                outcomes.addAll(allFailed(task, why));
             } else {
                 outcomes.addAll(runOrFail(tree, task));
             }
@@ -131,8 +153,8 @@ public final class Grader implements Callable<Integer> {
 
     /** Every graded test (of one task, or all), failed with the same reason: listed from the instructor's own tree. */
     private List<TestOutcome> allFailed(Integer task, String why) throws IOException, InterruptedException {
-        Path tree = out.resolve("work/instructor");
-        if (!Files.exists(out.resolve("work/instructor/classes"))) {
+        Path tree = work.resolve("instructor");
+        if (!Files.exists(tree.resolve("classes"))) {
             ProjectTree.copy(project, tree, Map.of());
             compile(tree);
         }
@@ -158,8 +180,9 @@ public final class Grader implements Callable<Integer> {
                     .append(String.join(", ", s.missing)).append('\n');
         }
         if (!s.ignored.isEmpty()) {
-            int shown = Math.min(s.ignored.size(), 40);
-            output.append("Ignored (only the files you were asked to edit are graded): ")
+            int shown = Math.min(s.ignored.size(), 5);
+            output.append("Ignored ").append(s.ignored.size()).append(s.ignored.size() == 1 ? " file" : " files")
+                    .append(" (only the files you were asked to edit are graded): ")
                     .append(String.join(", ", s.ignored.subList(0, shown)))
                     .append(s.ignored.size() > shown ? " and " + (s.ignored.size() - shown) + " more" : "").append('\n');
         }

@@ -56,6 +56,7 @@ public final class GradescopeResults {
         results.put("max_score", max);
         results.put("execution_time", Math.round(seconds * 10) / 10.0);
         results.put("output", output);
+        results.put("output_format", "text");
         results.put("visibility", "visible");
         results.put("stdout_visibility", "hidden");
         results.put("tests", tests);
@@ -71,6 +72,7 @@ public final class GradescopeResults {
         try {
             Files.writeString(temporary, json + "\n", StandardCharsets.UTF_8);
             Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
+            ReadableFiles.makeReadable(file);
         } finally {
             Files.deleteIfExists(temporary);
         }

@@ -165,6 +165,7 @@ public final class Handout {
             }
         }
         Files.move(temporary, zip, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        ray.grading.ReadableFiles.makeReadable(zip);
     }
 
     private static void delete(Path path) throws IOException {

@@ -100,14 +100,21 @@ public class GraderTest {
         // The score is what the regular tests of tasks 1 and 3 earn, plus every bonus point earned on top.
         assertEquals(max - byTask.get(2)[1] - byTask.get(4)[1] + bonus, (Double) results.get("score"), 1e-9);
         String output = (String) results.get("output");
-        assertTrue(output, output.contains("Ignored (only the files you were asked to edit are graded): ray1/build.gradle, "
+        assertTrue(output, output.contains("Ignored 2 files (only the files you were asked to edit are graded): ray1/build.gradle, "
                 + "ray1/src/test/java/ray/surface/SphereTest.java"));
+        try (Stream<Path> left = Files.list(FOLDER.getRoot().toPath().resolve("grade-broken"))) {
+            assertEquals("the run's work folder is removed", List.of("results.json"),
+                    left.map(p -> p.getFileName().toString()).collect(Collectors.toList()));
+        }
         assertTrue(results.toString(), results.toString().contains("called System.exit"));
     }
 
-    /** Flat files as Gradescope uploads them, one of which does not compile: score 0, the compiler's message as output. */
-    @Test(timeout = 300_000)
-    public void aSubmissionThatDoesNotCompileScoresZeroWithTheCompilerMessage() throws Exception {
+    /**
+     * Flat files as Gradescope uploads them, one of which does not compile: that task scores 0 with the
+     * compiler's message, and every other task is graded as usual (full marks here).
+     */
+    @Test(timeout = 600_000)
+    public void aFileThatDoesNotCompileCostsOnlyItsOwnTask() throws Exception {
         Path flat = FOLDER.getRoot().toPath().resolve("flat");
         Files.createDirectories(flat);
         for (String file : StudentFiles.in(PROJECT).keySet()) {
@@ -118,11 +125,42 @@ public class GraderTest {
             Files.writeString(flat.resolve(Path.of(file).getFileName().toString()), source, StandardCharsets.UTF_8);
         }
         Map<String, Object> results = grade(flat, "uncompilable");
-        assertEquals(0, (Double) results.get("score"), 0);
-        assertTrue((Double) results.get("max_score") > 50);
+        Map<Integer, double[]> byTask = pointsByTask(results);
+        assertEquals("the sphere that does not compile loses all of task 2", 0, byTask.get(2)[0], 0);
+        for (int task : new int[] {1, 3, 4, 5}) {
+            assertEquals("task " + task + " keeps all its points", byTask.get(task)[1], byTask.get(task)[0], 0);
+        }
         String output = (String) results.get("output");
-        assertTrue(output, output.contains("does not compile"));
+        assertTrue(output, output.contains("Task 2's files (src/main/java/ray/surface/Sphere.java) do not compile"));
         assertTrue(output, output.contains("src/main/java/ray/surface/Sphere.java:") && output.contains("';' expected"));
+        assertTrue(results.toString(), results.toString().contains("';' expected"));
+    }
+
+    /**
+     * When the grader itself cannot grade (the submission path does not exist), it still writes
+     * results.json: 0 points and the reason, replacing whatever an earlier run left there, readable
+     * by everyone, and exits 1.
+     */
+    @Test
+    public void aGraderThatFailsWritesAResultOfZeroWithTheReason() throws Exception {
+        Path out = FOLDER.getRoot().toPath().resolve("grade-missing");
+        Files.createDirectories(out);
+        Files.writeString(out.resolve("results.json"), "{\"score\": 99, \"tests\": []}");
+        Path nowhere = FOLDER.getRoot().toPath().resolve("no-such-submission");
+        int status = new CommandLine(new Grader()).execute("--project", PROJECT.toString(), "--classpath", LIBRARIES,
+                "--submission", nowhere.toString(), "--out", out.toString());
+        assertEquals(1, status);
+        @SuppressWarnings("unchecked")
+        Map<String, Object> results = new Gson().fromJson(Files.readString(out.resolve("results.json")), Map.class);
+        assertEquals(0, (Double) results.get("score"), 0);
+        assertEquals(List.of(), results.get("tests"));
+        assertTrue(results.toString(), ((String) results.get("output")).startsWith("The autograder could not grade this submission: ")
+                && ((String) results.get("output")).contains("no-such-submission"));
+        assertEquals("rw-r--r--", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(out.resolve("results.json"))));
+        try (Stream<Path> left = Files.list(out)) {
+            assertEquals(List.of("results.json"), left.map(p -> p.getFileName().toString()).collect(Collectors.toList()));
+        }
     }
 
     /**

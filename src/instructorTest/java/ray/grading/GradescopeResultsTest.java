@@ -36,6 +36,11 @@ public class GradescopeResultsTest {
     }
 
     @Test
+    public void theTopLevelOutputSaysItsFormat() {
+        assertEquals("text", GradescopeResults.of(OUTCOMES, "", 1.0).get("output_format"));
+    }
+
+    @Test
     public void totalsCountBonusPointsInTheScoreButNotInTheMaximum() {
         Map<String, Object> results = GradescopeResults.of(OUTCOMES, "", 1.0);
         // Regular points: 2 + 1 + 3 + 4 = 10. Earned: 2 + 3 regular, 1 + 0.5 bonus = 6.5.
