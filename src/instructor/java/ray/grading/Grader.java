@@ -18,8 +18,9 @@ import picocli.CommandLine.Option;
  * The autograder ({@code gradle grade [-Psubmission=DIR|ZIP]}): runs every graded test and writes
  * Gradescope's results.json.
  *
- * <p>A submission is graded task by task: the tests of task N run on a fresh copy of the
- * instructor's tree in which only task N's files are the student's. So a broken sphere costs the
+ * <p>A submission is graded task by task: the tests of task N run on the instructor's tree with
+ * only task N's files the student's (compiled against the instructor's classes, which are compiled
+ * once per run, and put first on the test JVM's class path). So a broken sphere costs the
  * sphere's points and nothing else, and no test needs its own copy of the solution. That holds for
  * a file that does not compile too: a missing brace in Triangle.java fails Task 3's tests, with the
  * compiler's messages, and no other task's. Without a submission, the instructor's own tree is
@@ -96,12 +97,7 @@ public final class Grader implements Callable<Integer> {
     }
 
     private List<TestOutcome> gradeInstructorTree() throws IOException, InterruptedException {
-        Path tree = ProjectTree.copy(project, work.resolve("instructor"), Map.of());
-        CompileResult compiled = compile(tree);
-        if (!compiled.ok()) {
-            throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
-        }
-        return tests(tree).run(null);
+        return tests(instructorTree()).run(null);
     }
 
     private List<TestOutcome> gradeSubmission(StringBuilder output) throws IOException, InterruptedException {
@@ -117,6 +113,10 @@ public final class Grader implements Callable<Integer> {
             Files.writeString(stub, SolutionMarkers.studentVersion(solution, missing), StandardCharsets.UTF_8);
             overlay.put(missing, stub);
         }
+        // The instructor's tree is copied and compiled once; each task then compiles only its own files
+        // against it, and its tests run with those classes first on the class path, so that every
+        // other class (framework, tests, the other tasks) is the solution's.
+        Path instructor = instructorTree();
         List<TestOutcome> outcomes = new ArrayList<>();
         for (int task : new TreeSet<>(studentFiles.values())) {
             Map<String, Path> taskFiles = new LinkedHashMap<>();
@@ -125,8 +125,16 @@ public final class Grader implements Callable<Integer> {
                     taskFiles.put(path, file);
                 }
             });
-            Path tree = ProjectTree.copy(project, work.resolve("task-" + task), taskFiles);
-            CompileResult taskCompiled = compile(tree);
+            Path taskDir = work.resolve("task-" + task);
+            List<Path> sources = new ArrayList<>();
+            for (Map.Entry<String, Path> file : taskFiles.entrySet()) {
+                Path copy = taskDir.resolve(file.getKey());
+                Files.createDirectories(copy.getParent());
+                Files.copy(file.getValue(), copy, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                sources.add(copy);
+            }
+            String againstInstructor = instructor.resolve("classes") + java.io.File.pathSeparator + classpath;
+            CompileResult taskCompiled = ProjectCompiler.compile(taskDir, sources, taskDir.resolve("classes"), againstInstructor);
             if (!taskCompiled.ok()) {
                 // Only this task's tests fail: each other task is graded with its own files, which may compile.
                 String files = String.join(", ", taskFiles.keySet());
@@ -136,28 +144,38 @@ public final class Grader implements Callable<Integer> {
                 output.append(why).append('\n');
                 outcomes.addAll(allFailed(task, why));
             } else {
-                outcomes.addAll(runOrFail(tree, task));
+                TestProcess tests = new TestProcess(instructor, taskDir.resolve("classes"), againstInstructor, taskDir.resolve("test-run"));
+                outcomes.addAll(runOrFail(tests, task));
             }
         }
         return outcomes;
     }
 
     /** The task's tests, or all of them failed with the reason when the test JVM cannot run them at all. */
-    private List<TestOutcome> runOrFail(Path tree, int task) throws IOException, InterruptedException {
+    private List<TestOutcome> runOrFail(TestProcess tests, int task) throws IOException, InterruptedException {
         try {
-            return tests(tree).run(task);
+            return tests.run(task);
         } catch (IllegalStateException e) {
             return allFailed(task, "the tests could not run: " + e.getMessage());
         }
     }
 
-    /** Every graded test (of one task, or all), failed with the same reason: listed from the instructor's own tree. */
-    private List<TestOutcome> allFailed(Integer task, String why) throws IOException, InterruptedException {
+    /** The instructor's tree, copied and compiled once per run (the classes every task's tests run on). */
+    private Path instructorTree() throws IOException {
         Path tree = work.resolve("instructor");
         if (!Files.exists(tree.resolve("classes"))) {
             ProjectTree.copy(project, tree, Map.of());
-            compile(tree);
+            CompileResult compiled = compile(tree);
+            if (!compiled.ok()) {
+                throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
+            }
         }
+        return tree;
+    }
+
+    /** Every graded test (of one task, or all), failed with the same reason: listed from the instructor's own tree. */
+    private List<TestOutcome> allFailed(Integer task, String why) throws IOException, InterruptedException {
+        Path tree = instructorTree();
         List<TestOutcome> failed = new ArrayList<>();
         for (TestOutcome t : tests(tree).list(task)) {
             failed.add(t.failedWith(why));

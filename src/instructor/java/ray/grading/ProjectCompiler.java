@@ -33,12 +33,6 @@ public final class ProjectCompiler {
      * @param classpath the libraries the sources need (JUnit, picocli, ...), as a path-separated list
      */
     public static CompileResult compile(Path project, Path classesDir, String classpath) throws IOException {
-        JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
-        if (compiler == null) {
-            throw new IllegalStateException("no Java compiler in this runtime: grading needs a JDK, not a JRE");
-        }
-        ProjectTree.deleteRecursively(classesDir);
-        Files.createDirectories(classesDir);
         List<Path> sources = new ArrayList<>();
         for (String folder : SOURCE_FOLDERS) {
             Path dir = project.resolve(folder);
@@ -48,6 +42,28 @@ public final class ProjectCompiler {
                 }
             }
         }
+        CompileResult result = compile(project, sources, classesDir, classpath);
+        for (String folder : RESOURCE_FOLDERS) {
+            Path dir = project.resolve(folder);
+            if (Files.isDirectory(dir)) {
+                ProjectTree.copyRecursively(dir, classesDir);
+            }
+        }
+        return result;
+    }
+
+    /**
+     * Compiles only {@code sources} (files under {@code project}) into {@code classesDir} against
+     * {@code classpath}: a task's few student files against the compiled instructor tree, which is
+     * what grading a task needs (the rest of the tree is compiled once per submission, not per task).
+     */
+    public static CompileResult compile(Path project, List<Path> sources, Path classesDir, String classpath) throws IOException {
+        JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
+        if (compiler == null) {
+            throw new IllegalStateException("no Java compiler in this runtime: grading needs a JDK, not a JRE");
+        }
+        ProjectTree.deleteRecursively(classesDir);
+        Files.createDirectories(classesDir);
         DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
         StringWriter output = new StringWriter();
         boolean ok;
@@ -56,12 +72,6 @@ public final class ProjectCompiler {
                     "-d", classesDir.toString(), "-cp", classpath);
             ok = compiler.getTask(output, files, diagnostics, options, null,
                     files.getJavaFileObjectsFromPaths(sources)).call();
-        }
-        for (String folder : RESOURCE_FOLDERS) {
-            Path dir = project.resolve(folder);
-            if (Files.isDirectory(dir)) {
-                ProjectTree.copyRecursively(dir, classesDir);
-            }
         }
         return new CompileResult(ok, describe(project, diagnostics) + output);
     }
