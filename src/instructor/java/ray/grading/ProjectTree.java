@@ -13,9 +13,9 @@ import java.util.Map;
 import java.util.stream.Stream;
 
 /** Copies of a project tree to grade in: the sources and scenes, with some student files laid over them. */
-final class ProjectTree {
+public final class ProjectTree {
     /** What a test run needs from the project; build output, VCS data and docs are not copied. */
-    private static final List<String> PARTS = List.of("src", "scenes");
+    public static final List<String> PARTS = List.of("src", "scenes");
 
     private ProjectTree() {
     }
