@@ -76,7 +76,10 @@ public final class Grader implements Callable<Integer> {
             }
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        Map<String, Object> results = GradescopeResults.of(outcomes, output.toString(), seconds);
+        // Student code can read the grading tree: nothing it quotes from the instructor's files reaches the results.
+        Redaction redaction = Redaction.of(project);
+        outcomes = redaction.redact(outcomes);
+        Map<String, Object> results = GradescopeResults.of(outcomes, redaction.redact(output.toString()), seconds);
         writeResults(results, resultsFile);
         System.out.print(output);
         System.out.print(GradescopeResults.table(outcomes));
