@@ -59,11 +59,18 @@ public final class Grader implements Callable<Integer> {
         long start = System.nanoTime();
         StringBuilder output = new StringBuilder();
         List<TestOutcome> outcomes;
+        Map<String, String> pictures;
+        Redaction redaction;
         Path resultsFile = out.resolve("results.json");
         try {
             Files.createDirectories(out);
             work = Files.createTempDirectory(out, "work-");
             outcomes = submission == null ? gradeInstructorTree() : gradeSubmission(output);
+            // Student code can read the grading tree: nothing it quotes from the instructor's files reaches the results.
+            redaction = Redaction.of(project);
+            outcomes = redaction.redact(outcomes);
+            // Taken now: the render tests' pictures are in the work folder, which goes below.
+            pictures = RenderFeedback.of(outcomes, work.resolve("instructor"));
         } catch (Exception | Error e) {
             // Whatever went wrong, the platform reads a result: 0 points and why, not an earlier student's file.
             String why = "The autograder could not grade this submission: " + (e.getMessage() == null ? e.toString() : e.getMessage());
@@ -76,10 +83,7 @@ public final class Grader implements Callable<Integer> {
             }
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        // Student code can read the grading tree: nothing it quotes from the instructor's files reaches the results.
-        Redaction redaction = Redaction.of(project);
-        outcomes = redaction.redact(outcomes);
-        Map<String, Object> results = GradescopeResults.of(outcomes, redaction.redact(output.toString()), seconds);
+        Map<String, Object> results = GradescopeResults.of(outcomes, redaction.redact(output.toString()), seconds, pictures);
         writeResults(results, resultsFile);
         System.out.print(output);
         System.out.print(GradescopeResults.table(outcomes));

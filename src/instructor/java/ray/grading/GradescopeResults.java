@@ -31,6 +31,14 @@ public final class GradescopeResults {
     }
 
     public static Map<String, Object> of(List<TestOutcome> outcomes, String output, double seconds) {
+        return of(outcomes, output, seconds, Map.of());
+    }
+
+    /**
+     * The same, with some tests' output given as HTML (a failed render test's message with its
+     * pictures, {@link RenderFeedback}), by test id; those tests say {@code "output_format": "html"}.
+     */
+    public static Map<String, Object> of(List<TestOutcome> outcomes, String output, double seconds, Map<String, String> html) {
         List<Map<String, Object>> tests = new ArrayList<>();
         Map<Integer, Integer> numberInTask = new TreeMap<>();
         double score = 0;
@@ -44,7 +52,9 @@ public final class GradescopeResults {
             test.put("score", t.earned());
             test.put("max_score", t.possible());
             test.put("status", t.passed() ? "passed" : "failed");
-            test.put("output", t.message());
+            String page = html.get(t.id());
+            test.put("output", page != null ? page : t.message());
+            test.put("output_format", page != null ? "html" : "text");
             test.put("tags", t.bonus() ? List.of("task" + t.task(), "bonus") : List.of("task" + t.task()));
             test.put("visibility", t.visibility());
             tests.add(test);

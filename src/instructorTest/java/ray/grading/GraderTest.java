@@ -71,6 +71,7 @@ public class GraderTest {
 
     /** A zip laid out like the handout under a top folder, with a stubbed sphere, an exiting group and junk. */
     @Test(timeout = 600_000)
+    @SuppressWarnings("unchecked")
     public void eachBrokenTaskLosesExactlyItsOwnPoints() throws Exception {
         Path zip = FOLDER.getRoot().toPath().resolve("submission.zip");
         try (OutputStream o = Files.newOutputStream(zip); ZipOutputStream z = new ZipOutputStream(o)) {
@@ -107,6 +108,15 @@ public class GraderTest {
                     left.map(p -> p.getFileName().toString()).collect(Collectors.toList()));
         }
         assertTrue(results.toString(), results.toString().contains("called System.exit"));
+        // The stubbed sphere's renders fail with their pictures inline and the trace of the worst pixel.
+        Map<String, Object> render = ((List<Map<String, Object>>) results.get("tests")).stream()
+                .filter(t -> ((String) t.get("name")).contains("SphereRenderTest.rendersLikeTheReference[one-sphere]"))
+                .findFirst().orElseThrow();
+        String page = (String) render.get("output");
+        assertEquals("html", render.get("output_format"));
+        assertEquals(page, 3, page.split("src=\"data:image/png;base64,", -1).length - 1);
+        assertTrue(page, page.contains("gradle run --args=\"trace scenes/one-sphere.xml "));
+        assertTrue(page, !page.contains("file://"));
     }
 
     /**

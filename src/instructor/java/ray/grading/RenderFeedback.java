@@ -1,0 +1,136 @@
+package ray.grading;
+
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Base64;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.imageio.ImageIO;
+
+/**
+ * Pictures for a failed render test, for the platform to show beside its message: the student's
+ * render, the reference and the heat map of their difference (written by the render test into the
+ * grading tree's build/reports/render-diff, which the student cannot open), each shrunk to
+ * {@link #WIDTH} pixels across and inlined as a data URL, and the one {@code ray1 trace} command
+ * that explains the pixel where the two differ most. The message's own pointer to the report, a
+ * path on the grading machine, is left out.
+ */
+final class RenderFeedback {
+    /** Width of the inlined pictures: small enough for a results file of many failures, large enough to see what is wrong. */
+    static final int WIDTH = 160;
+    private static final Pattern SCENE = Pattern.compile("^(\\S+\\.xml) does not look like", Pattern.MULTILINE);
+    private static final Pattern PARAMETER = Pattern.compile("\\[([^\\]]+)\\]$");
+    private static final String REPORT_LINE = "See your image, the reference and where they differ in";
+
+    private RenderFeedback() {
+    }
+
+    /** For each failed render test whose pictures exist under {@code tree}: its id → the HTML to show. */
+    static Map<String, String> of(List<TestOutcome> outcomes, Path tree) {
+        Map<String, String> html = new LinkedHashMap<>();
+        for (TestOutcome t : outcomes) {
+            if (t.passed() || !t.className().startsWith("ray.endtoend.")) {
+                continue;
+            }
+            Matcher parameter = PARAMETER.matcher(t.method());
+            Matcher scene = SCENE.matcher(t.message().replaceFirst("^\\[[^\\]]*\\] ", ""));
+            if (!parameter.find() || !scene.find()) {
+                continue;
+            }
+            String simpleName = t.className().substring(t.className().lastIndexOf('.') + 1);
+            Path folder = tree.resolve("build/reports/render-diff").resolve(simpleName);
+            Path yours = folder.resolve(parameter.group(1) + "-yours.png");
+            Path reference = folder.resolve(parameter.group(1) + "-reference.png");
+            Path difference = folder.resolve(parameter.group(1) + "-diff.png");
+            try {
+                if (Files.isRegularFile(yours) && Files.isRegularFile(reference)) {
+                    html.put(t.id(), page(t.message(), scene.group(1), ImageIO.read(yours.toFile()), ImageIO.read(reference.toFile()),
+                            Files.isRegularFile(difference) ? ImageIO.read(difference.toFile()) : null));
+                }
+            } catch (IOException | RuntimeException e) {
+                // No pictures for this test: its message alone still says what is wrong.
+            }
+        }
+        return html;
+    }
+
+    private static String page(String message, String sceneFile, BufferedImage yours, BufferedImage reference, BufferedImage difference)
+            throws IOException {
+        StringBuilder text = new StringBuilder();
+        for (String line : message.split("\n")) {
+            if (!line.strip().startsWith(REPORT_LINE)) {
+                text.append(line).append('\n');
+            }
+        }
+        StringBuilder html = new StringBuilder("<pre>").append(escape(text.toString().strip())).append("</pre>\n<p>");
+        html.append(figure(yours, "your render")).append(figure(reference, "the reference"));
+        if (difference != null) {
+            html.append(figure(difference, "where they differ"));
+        }
+        html.append("</p>\n");
+        int[] worst = worstPixel(yours, reference);
+        if (worst != null) {
+            html.append("<p>They differ most at pixel (").append(worst[0]).append(", ").append(worst[1])
+                    .append(") (from the left and from the top). See why your code colors it so:</p>\n<pre>gradle run --args=\"trace ")
+                    .append(escape(sceneFile)).append(' ').append(worst[0]).append(' ').append(worst[1]).append("\"</pre>\n");
+        }
+        return html.toString();
+    }
+
+    /** The pixel (x from the left, y from the top) where the two differ most in any channel, or null when their sizes differ. */
+    static int[] worstPixel(BufferedImage a, BufferedImage b) {
+        if (a.getWidth() != b.getWidth() || a.getHeight() != b.getHeight()) {
+            return null;
+        }
+        int[] worst = null;
+        int most = -1;
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                int p = a.getRGB(x, y);
+                int q = b.getRGB(x, y);
+                int d = Math.max(Math.abs(((p >> 16) & 255) - ((q >> 16) & 255)),
+                        Math.max(Math.abs(((p >> 8) & 255) - ((q >> 8) & 255)), Math.abs((p & 255) - (q & 255))));
+                if (d > most) {
+                    most = d;
+                    worst = new int[] {x, y};
+                }
+            }
+        }
+        return worst;
+    }
+
+    private static String figure(BufferedImage image, String caption) throws IOException {
+        return "<img alt=\"" + caption + "\" title=\"" + caption + "\" src=\"data:image/png;base64," + base64(shrunk(image)) + "\"> ";
+    }
+
+    private static BufferedImage shrunk(BufferedImage image) {
+        if (image.getWidth() <= WIDTH) {
+            return image;
+        }
+        int height = Math.max(1, Math.round((float) image.getHeight() * WIDTH / image.getWidth()));
+        BufferedImage small = new BufferedImage(WIDTH, height, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = small.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_BILINEAR);
+        g.drawImage(image, 0, 0, WIDTH, height, null);
+        g.dispose();
+        return small;
+    }
+
+    private static String base64(BufferedImage image) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        ImageIO.write(image, "png", bytes);
+        return Base64.getEncoder().encodeToString(bytes.toByteArray());
+    }
+
+    static String escape(String s) {
+        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
+    }
+}
