@@ -16,7 +16,7 @@ import picocli.CommandLine.Option;
 
 /**
  * The autograder ({@code gradle grade [-Psubmission=DIR|ZIP]}): runs every graded test and writes
- * Gradescope's results.json.
+ * Gradescope's results.json (or PrairieLearn's, with {@code --format prairielearn}).
  *
  * <p>A submission is graded task by task: the tests of task N run on the instructor's tree with
  * only task N's files the student's (compiled against the instructor's classes, which are compiled
@@ -47,6 +47,12 @@ public final class Grader implements Callable<Integer> {
     @Option(names = "--results", description = "Also write results.json here (Gradescope: /autograder/results/results.json).")
     Path resultsCopy;
 
+    /** The platform whose results.json to write; both come from the same outcomes. */
+    enum Format { gradescope, prairielearn }
+
+    @Option(names = "--format", description = "results.json for ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}).")
+    Format format = Format.gradescope;
+
     public static void main(String[] args) {
         System.exit(new CommandLine(new Grader()).execute(args));
     }
@@ -74,7 +80,8 @@ public final class Grader implements Callable<Integer> {
         } catch (Exception | Error e) {
             // Whatever went wrong, the platform reads a result: 0 points and why, not an earlier student's file.
             String why = "The autograder could not grade this submission: " + (e.getMessage() == null ? e.toString() : e.getMessage());
-            writeResults(GradescopeResults.of(List.of(), output + why + "\n", (System.nanoTime() - start) / 1e9), resultsFile);
+            writeResults(format == Format.prairielearn ? PrairieLearnResults.notGradable(output + why)
+                    : GradescopeResults.of(List.of(), output + why + "\n", (System.nanoTime() - start) / 1e9), resultsFile);
             System.err.println("error: " + why);
             return 1;
         } finally {
@@ -83,7 +90,9 @@ public final class Grader implements Callable<Integer> {
             }
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        Map<String, Object> results = GradescopeResults.of(outcomes, redaction.redact(output.toString()), seconds, pictures);
+        String shown = redaction.redact(output.toString());
+        Map<String, Object> results = format == Format.prairielearn ? PrairieLearnResults.of(outcomes, shown)
+                : GradescopeResults.of(outcomes, shown, seconds, pictures);
         writeResults(results, resultsFile);
         System.out.print(output);
         System.out.print(GradescopeResults.table(outcomes));

@@ -46,8 +46,7 @@ public final class GradescopeResults {
         for (TestOutcome t : outcomes) {
             int n = numberInTask.merge(t.task(), 1, Integer::sum);
             Map<String, Object> test = new LinkedHashMap<>();
-            test.put("name", "Task " + t.task() + " (" + t.taskTitle() + "): " + simpleName(t.className()) + "." + t.method()
-                    + (t.bonus() ? " (bonus)" : ""));
+            test.put("name", name(t));
             test.put("number", t.task() + "." + n);
             test.put("score", t.earned());
             test.put("max_score", t.possible());
@@ -71,6 +70,12 @@ public final class GradescopeResults {
         results.put("stdout_visibility", "hidden");
         results.put("tests", tests);
         return results;
+    }
+
+    /** A test's name as students see it: "Task 2 (Sphere): SphereTest.hit", " (bonus)" after a bonus test's. */
+    static String name(TestOutcome t) {
+        return "Task " + t.task() + " (" + t.taskTitle() + "): " + simpleName(t.className()) + "." + t.method()
+                + (t.bonus() ? " (bonus)" : "");
     }
 
     /** Writes the JSON atomically: an autograder that is stopped never leaves half a file. */
@@ -129,7 +134,8 @@ public final class GradescopeResults {
                 number(r[3]), bonus).stripTrailing() + System.lineSeparator();
     }
 
-    private static String number(double x) {
+    /** Points as people write them: "3", "2.5". */
+    static String number(double x) {
         return x == Math.rint(x) ? String.valueOf((long) x) : String.format(Locale.ROOT, "%.1f", x);
     }
 

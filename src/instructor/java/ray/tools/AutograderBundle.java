@@ -1,18 +1,12 @@
 package ray.tools;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.jar.JarEntry;
-import java.util.jar.JarOutputStream;
-import java.util.stream.Collectors;
-import java.util.stream.Stream;
 import org.apache.commons.compress.archivers.zip.ZipArchiveEntry;
 import org.apache.commons.compress.archivers.zip.ZipArchiveOutputStream;
-import ray.grading.ProjectTree;
 import ray.grading.ReadableFiles;
 
 /**
@@ -43,16 +37,7 @@ public final class AutograderBundle {
         }
         List<Path> classes = new ArrayList<>();
         List<Path> libraries = new ArrayList<>();
-        List<Path> current = null;
-        for (int i = 2; i < args.length; i++) {
-            if (args[i].equals("--classes")) {
-                current = classes;
-            } else if (args[i].equals("--libraries")) {
-                current = libraries;
-            } else if (current != null) {
-                current.add(Path.of(args[i]));
-            }
-        }
+        GradingKit.parse(args, 2, classes, libraries);
         Path zip = Path.of(args[1]);
         build(Path.of(args[0]), zip, classes, libraries);
         System.out.println("autograder: " + zip + " (" + Files.size(zip) / 1024 + " KiB)");
@@ -68,25 +53,10 @@ public final class AutograderBundle {
         Files.createDirectories(zip.toAbsolutePath().getParent());
         Path temporary = Files.createTempFile(zip.toAbsolutePath().getParent(), ".gradescope", ".tmp");
         try (ZipArchiveOutputStream out = new ZipArchiveOutputStream(Files.newOutputStream(temporary))) {
-            put(out, "setup.sh", script("setup.sh"), EXECUTABLE);
-            put(out, "run_autograder", script("run_autograder"), EXECUTABLE);
-            for (String part : ProjectTree.PARTS) {
-                Path folder = project.resolve(part);
-                if (!Files.isDirectory(folder)) {
-                    continue;
-                }
-                try (Stream<Path> walk = Files.walk(folder)) {
-                    for (Path file : walk.filter(Files::isRegularFile).sorted().collect(Collectors.toList())) {
-                        put(out, "ray1/" + project.relativize(file).toString().replace('\\', '/'), Files.readAllBytes(file), READABLE);
-                    }
-                }
-            }
-            put(out, "lib/ray1-grader.jar", jarOf(classes), READABLE);
-            for (Path library : libraries) {
-                if (library.toString().endsWith(".jar")) {
-                    put(out, "lib/" + library.getFileName(), Files.readAllBytes(library), READABLE);
-                }
-            }
+            GradingKit.Sink sink = (name, content, executable) -> put(out, name, content, executable ? EXECUTABLE : READABLE);
+            sink.put("setup.sh", GradingKit.resource("gradescope/setup.sh"), true);
+            sink.put("run_autograder", GradingKit.resource("gradescope/run_autograder"), true);
+            GradingKit.write(sink, "", project, classes, libraries);
         } catch (IOException | RuntimeException e) {
             Files.deleteIfExists(temporary);
             throw e;
@@ -101,39 +71,5 @@ public final class AutograderBundle {
         out.putArchiveEntry(entry);
         out.write(content);
         out.closeArchiveEntry();
-    }
-
-    /** One jar of every class folder's files (the first folder's file wins a name clash). */
-    private static byte[] jarOf(List<Path> folders) throws IOException {
-        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
-        java.util.Set<String> seen = new java.util.HashSet<>();
-        try (JarOutputStream jar = new JarOutputStream(bytes)) {
-            for (Path folder : folders) {
-                if (!Files.isDirectory(folder)) {
-                    continue;
-                }
-                try (Stream<Path> walk = Files.walk(folder)) {
-                    for (Path file : walk.filter(Files::isRegularFile).sorted().collect(Collectors.toList())) {
-                        String name = folder.relativize(file).toString().replace('\\', '/');
-                        if (seen.add(name)) {
-                            jar.putNextEntry(new JarEntry(name));
-                            Files.copy(file, jar);
-                            jar.closeEntry();
-                        }
-                    }
-                }
-            }
-        }
-        return bytes.toByteArray();
-    }
-
-    /** A script of the bundle, kept as a resource beside this class. */
-    private static byte[] script(String name) throws IOException {
-        try (var in = AutograderBundle.class.getResourceAsStream("gradescope/" + name)) {
-            if (in == null) {
-                throw new IllegalStateException("the bundle's " + name + " is missing from the grader's resources");
-            }
-            return in.readAllBytes();
-        }
     }
 }

@@ -14,7 +14,7 @@ import org.junit.Test;
  */
 public class GradescopeResultsTest {
     /** Task 2: regular 2 (passed) and 1 (failed), bonus 1 (passed) and 1 (failed); task 3: regular 3 and bonus 0.5, both passed; task 4: regular 4, failed. */
-    private static final List<TestOutcome> OUTCOMES = List.of(
+    static final List<TestOutcome> OUTCOMES = List.of(
             outcome("SphereTest", "hit", 2, 2, false, true),
             outcome("SphereTest", "miss", 2, 1, false, false),
             outcome("SphereHardCasesBonusTest", "farSphere", 2, 1, true, true),
@@ -23,7 +23,7 @@ public class GradescopeResultsTest {
             outcome("TriangleHardCasesBonusTest", "tiny", 3, 0.5, true, true),
             outcome("GroupTest", "closest", 4, 4, false, false));
 
-    private static TestOutcome outcome(String simpleClass, String method, int task, double points, boolean bonus, boolean passed) {
+    static TestOutcome outcome(String simpleClass, String method, int task, double points, boolean bonus, boolean passed) {
         String className = "ray.surface." + simpleClass;
         String title = Map.of(2, "Sphere", 3, "Triangle", 4, "Group").get(task);
         return new TestOutcome(className + "#" + method, className, method, task, title, points, bonus, "visible", passed,
@@ -31,7 +31,7 @@ public class GradescopeResultsTest {
     }
 
     @SuppressWarnings("unchecked")
-    private static Map<String, Object> test(Map<String, Object> results, int index) {
+    static Map<String, Object> test(Map<String, Object> results, int index) {
         return ((List<Map<String, Object>>) results.get("tests")).get(index);
     }
 

@@ -4,13 +4,10 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
 import com.google.gson.Gson;
-import java.io.File;
 import java.io.InputStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
-import java.util.ArrayList;
 import java.util.Enumeration;
 import java.util.List;
 import java.util.Map;
@@ -19,8 +16,6 @@ import org.apache.commons.compress.archivers.zip.ZipFile;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import ray.grading.SolutionMarkers;
-import ray.grading.StudentFiles;
 
 /**
  * The Gradescope bundle works as Gradescope uses it: unpacked into a folder laid out like
@@ -32,42 +27,21 @@ public class AutograderBundleTest {
     @ClassRule
     public static final TemporaryFolder FOLDER = new TemporaryFolder();
 
-    private static final String SPHERE = "src/main/java/ray/surface/Sphere.java";
-
     @Test(timeout = 600_000)
     @SuppressWarnings("unchecked")
     public void runAutograderGradesASubmissionIntoResultsJson() throws Exception {
         Path root = FOLDER.getRoot().toPath().resolve("autograder");
         Path zip = FOLDER.getRoot().toPath().resolve("ray1-gradescope.zip");
-        List<Path> classes = new ArrayList<>();
-        List<Path> libraries = new ArrayList<>();
-        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
-            Path path = Path.of(entry);
-            if (entry.endsWith(".jar")) {
-                libraries.add(path);
-            } else if (Files.isDirectory(path) && !path.getFileName().toString().equals("test")) {
-                classes.add(path);
-            }
-        }
-        AutograderBundle.build(Path.of("."), zip, classes, libraries);
+        KitInputs kit = new KitInputs();
+        AutograderBundle.build(Path.of("."), zip, kit.classes, kit.libraries);
         unpack(zip, root.resolve("source"));
         assertEquals("rwxr-xr-x", PosixFilePermissions.toString(Files.getPosixFilePermissions(root.resolve("source/run_autograder"))));
         assertEquals("rwxr-xr-x", PosixFilePermissions.toString(Files.getPosixFilePermissions(root.resolve("source/setup.sh"))));
         assertTrue(Files.readString(root.resolve("source/run_autograder")).startsWith("#!/usr/bin/env bash\n"));
 
-        Path submission = root.resolve("submission");
-        Files.createDirectories(submission);
-        for (String file : StudentFiles.in(Path.of(".")).keySet()) {
-            String source = Files.readString(Path.of(file), StandardCharsets.UTF_8);
-            if (file.equals(SPHERE)) {
-                source = SolutionMarkers.studentVersion(source, file);
-            }
-            Files.writeString(submission.resolve(Path.of(file).getFileName().toString()), source, StandardCharsets.UTF_8);
-        }
-        ProcessBuilder run = new ProcessBuilder("bash", root.resolve("source/run_autograder").toString())
-                .redirectErrorStream(true).redirectOutput(FOLDER.getRoot().toPath().resolve("run.log").toFile());
-        run.environment().put("AUTOGRADER_ROOT", root.toString());
-        assertEquals(0, run.start().waitFor());
+        KitInputs.writeSubmissionWithStubbedSphere(root.resolve("submission"));
+        assertEquals(0, KitInputs.runScript(root.resolve("source/run_autograder"), "AUTOGRADER_ROOT", root,
+                FOLDER.getRoot().toPath().resolve("run.log")));
 
         Map<String, Object> results = new Gson().fromJson(Files.readString(root.resolve("results/results.json")), Map.class);
         double[] regular = new double[7];

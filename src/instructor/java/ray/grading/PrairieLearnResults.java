@@ -1,0 +1,73 @@
+package ray.grading;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * PrairieLearn's external-grader results.json (docs.prairielearn.com, "External Grading"):
+ * {@code gradable}, {@code score} as a fraction in [0, 1], {@code message}, {@code output},
+ * {@code images} and one entry per test with {@code name}, {@code points}, {@code max_points},
+ * {@code message}, {@code output} and {@code images}. The same outcomes as Gradescope's file, so one
+ * grading path serves both platforms.
+ *
+ * <p>Points: {@code score} is every point earned, bonus included, over the regular tests' points,
+ * as Gradescope's score over its max_score, but capped at 1, because PrairieLearn takes a question's
+ * score only in [0, 1]: bonus points can make up for failed regular tests, and anything above full
+ * marks is lost (extra credit beyond a question's points is an assessment setting, maxBonusPoints).
+ * A bonus test shows {@code max_points} 0, as on Gradescope.
+ *
+ * <p>Visibility: PrairieLearn shows every test to the student, so a test that is not "visible" on
+ * Gradescope (hidden, after the due date, after publishing) is shown as "Hidden test N" with its
+ * points and no message or output, giving nothing of the test away.
+ *
+ * <p>Images: every list is empty for now; renders of the student's scenes can go there later as
+ * {@code {"label", "url": "data:image/png;base64,…"}}.
+ */
+public final class PrairieLearnResults {
+    private PrairieLearnResults() {
+    }
+
+    public static Map<String, Object> of(List<TestOutcome> outcomes, String output) {
+        List<Map<String, Object>> tests = new ArrayList<>();
+        double earned = 0;
+        double max = 0;
+        int hidden = 0;
+        for (TestOutcome t : outcomes) {
+            boolean visible = "visible".equals(t.visibility());
+            Map<String, Object> test = new LinkedHashMap<>();
+            test.put("name", visible ? GradescopeResults.name(t) : "Hidden test " + ++hidden + (t.bonus() ? " (bonus)" : ""));
+            test.put("points", t.earned());
+            test.put("max_points", t.possible());
+            test.put("message", visible ? t.message() : "");
+            test.put("output", "");
+            test.put("images", List.of());
+            tests.add(test);
+            earned += t.earned();
+            max += t.possible();
+        }
+        Map<String, Object> results = new LinkedHashMap<>();
+        results.put("gradable", true);
+        results.put("score", max > 0 ? Math.min(1, earned / max) : 0.0);
+        results.put("message", String.format(java.util.Locale.ROOT, "%s of %s points%s.", GradescopeResults.number(earned), GradescopeResults.number(max),
+                earned > max ? " (full marks; bonus points above them do not count here)" : ""));
+        results.put("output", output);
+        results.put("images", List.of());
+        results.put("tests", tests);
+        return results;
+    }
+
+    /**
+     * The grader could not grade at all (a failure of the grader, not of the student's code):
+     * PrairieLearn then awards and takes nothing and does not count the attempt.
+     */
+    public static Map<String, Object> notGradable(String why) {
+        Map<String, Object> results = new LinkedHashMap<>();
+        results.put("gradable", false);
+        results.put("format_errors", List.of(why));
+        results.put("message", why);
+        results.put("output", why);
+        return results;
+    }
+}

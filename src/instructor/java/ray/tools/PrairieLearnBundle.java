@@ -1,0 +1,72 @@
+package ray.tools;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFileAttributeView;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.TreeSet;
+import ray.grading.ProjectTree;
+import ray.grading.StudentFiles;
+
+/**
+ * {@code gradle prairielearn}: PrairieLearn's external grader as a Docker build context,
+ * build/prairielearn/:
+ * <ul>
+ * <li>{@code Dockerfile}: a public JDK 17 image with {@code ray1-grader/} baked in at /ray1-grader;</li>
+ * <li>{@code ray1-grader/run}: the entrypoint, grading /grade/student into
+ *     /grade/results/results.json (the root from {@code GRADE_ROOT}, for tests) with the same grader
+ *     as Gradescope's, in PrairieLearn's format;</li>
+ * <li>{@code ray1-grader/ray1/} and {@code lib/}: the {@link GradingKit};</li>
+ * <li>{@code info.json} and {@code README.md}: the question's externalGradingOptions and how to set it up.</li>
+ * </ul>
+ * Usage: {@code PrairieLearnBundle PROJECT FOLDER IMAGE --classes DIR... --libraries JAR...}.
+ */
+public final class PrairieLearnBundle {
+    private PrairieLearnBundle() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        if (args.length < 3) {
+            System.err.println("usage: PrairieLearnBundle PROJECT FOLDER IMAGE --classes DIR... --libraries JAR...");
+            System.exit(2);
+        }
+        List<Path> classes = new ArrayList<>();
+        List<Path> libraries = new ArrayList<>();
+        GradingKit.parse(args, 3, classes, libraries);
+        Path folder = Path.of(args[1]);
+        build(Path.of(args[0]), folder, args[2], classes, libraries);
+        System.out.println("prairielearn: " + folder + " (image " + args[2] + "; see its README.md)");
+    }
+
+    /** Writes the folder afresh (an earlier build's files never linger in the image). */
+    public static void build(Path project, Path folder, String image, List<Path> classes, List<Path> libraries) throws IOException {
+        if (Files.exists(folder)) {
+            ProjectTree.deleteRecursively(folder);
+        }
+        String files = String.join(",", new TreeSet<>(StudentFiles.in(project).keySet().stream()
+                .map(f -> Path.of(f).getFileName().toString()).toList()));
+        GradingKit.Sink sink = (name, content, executable) -> {
+            Path file = folder.resolve(name);
+            Files.createDirectories(file.getParent());
+            Files.write(file, content);
+            if (Files.getFileAttributeView(file, PosixFileAttributeView.class) != null) {
+                Files.setPosixFilePermissions(file, PosixFilePermissions.fromString(executable ? "rwxr-xr-x" : "rw-r--r--"));
+            }
+        };
+        sink.put("Dockerfile", GradingKit.resource("prairielearn/Dockerfile"), false);
+        sink.put("info.json", filled("info.json", image, files), false);
+        sink.put("README.md", filled("README.md", image, files), false);
+        sink.put("ray1-grader/run", GradingKit.resource("prairielearn/run"), true);
+        GradingKit.write(sink, "ray1-grader/", project, classes, libraries);
+    }
+
+    /** A text resource with the image's name and the student files' names filled in. */
+    private static byte[] filled(String name, String image, String files) throws IOException {
+        String text = new String(GradingKit.resource("prairielearn/" + name), StandardCharsets.UTF_8);
+        return text.replace("@IMAGE@", image).replace("@FILES@", files).getBytes(StandardCharsets.UTF_8);
+    }
+}

@@ -1,0 +1,82 @@
+package ray.grading;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+import static ray.grading.GradescopeResultsTest.OUTCOMES;
+import static ray.grading.GradescopeResultsTest.test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.junit.Test;
+
+/**
+ * PrairieLearn's results.json from the same hand-made outcomes as Gradescope's: the score is a
+ * fraction capped at 1, bonus tests count in it but not in the maximum, and hidden tests give
+ * nothing away.
+ */
+public class PrairieLearnResultsTest {
+    @Test
+    public void theScoreIsEveryPointEarnedOverTheRegularPoints() {
+        Map<String, Object> results = PrairieLearnResults.of(OUTCOMES, "graded");
+        // As Gradescope's: 6.5 earned (bonus included) of 10 regular points.
+        assertEquals(true, results.get("gradable"));
+        assertEquals(0.65, (Double) results.get("score"), 1e-12);
+        assertEquals("6.5 of 10 points.", results.get("message"));
+        assertEquals("graded", results.get("output"));
+        assertEquals(List.of(), results.get("images"));
+    }
+
+    @Test
+    public void bonusPointsAboveFullMarksAreCappedAtOne() {
+        // Every test passed: 10 regular and 1.5 bonus of the 2.5 offered, 11.5 of 10.
+        List<TestOutcome> all = new ArrayList<>();
+        for (TestOutcome t : OUTCOMES) {
+            all.add(GradescopeResultsTest.outcome(t.className().substring("ray.surface.".length()), t.method(), t.task(), t.points(),
+                    t.bonus(), !t.method().equals("tangent")));
+        }
+        Map<String, Object> results = PrairieLearnResults.of(all, "");
+        assertEquals(1.0, (Double) results.get("score"), 0);
+        assertTrue(((String) results.get("message")).startsWith("11.5 of 10 points (full marks;"));
+    }
+
+    @Test
+    public void testsKeepTheirNamesPointsAndMessages() {
+        Map<String, Object> results = PrairieLearnResults.of(OUTCOMES, "");
+        Map<String, Object> failed = test(results, 1);
+        assertEquals("Task 2 (Sphere): SphereTest.miss", failed.get("name"));
+        assertEquals(0.0, (Double) failed.get("points"), 0);
+        assertEquals(1.0, (Double) failed.get("max_points"), 0);
+        assertEquals("[Task 2] it failed", failed.get("message"));
+        Map<String, Object> bonus = test(results, 2);
+        assertEquals("Task 2 (Sphere): SphereHardCasesBonusTest.farSphere (bonus)", bonus.get("name"));
+        assertEquals(1.0, (Double) bonus.get("points"), 0);
+        assertEquals(0.0, (Double) bonus.get("max_points"), 0);
+    }
+
+    @Test
+    public void hiddenTestsShowOnlyANumberAndTheirPoints() {
+        List<TestOutcome> outcomes = new ArrayList<>();
+        for (TestOutcome t : OUTCOMES) {
+            String visibility = t.task() == 2 ? "hidden" : t.task() == 4 ? "after_due_date" : "visible";
+            outcomes.add(new TestOutcome(t.id(), t.className(), t.method(), t.task(), t.taskTitle(), t.points(), t.bonus(),
+                    visibility, t.passed(), t.message(), t.seconds()));
+        }
+        Map<String, Object> results = PrairieLearnResults.of(outcomes, "");
+        Map<String, Object> failed = test(results, 1);
+        assertEquals("Hidden test 2", failed.get("name"));
+        assertEquals("", failed.get("message"));
+        assertEquals(1.0, (Double) failed.get("max_points"), 0);
+        assertEquals("Hidden test 3 (bonus)", test(results, 2).get("name"));
+        assertEquals("Task 3 (Triangle): TriangleTest.hit", test(results, 4).get("name"));
+        assertEquals("Hidden test 5", test(results, 6).get("name"));
+        assertEquals(0.65, (Double) results.get("score"), 1e-12);
+    }
+
+    @Test
+    public void aGraderThatCannotGradeCostsNoAttempt() {
+        Map<String, Object> results = PrairieLearnResults.notGradable("no such folder");
+        assertEquals(false, results.get("gradable"));
+        assertEquals(List.of("no such folder"), results.get("format_errors"));
+    }
+}

@@ -1,0 +1,69 @@
+package ray.tools;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import com.google.gson.Gson;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.List;
+import java.util.Map;
+import org.junit.ClassRule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+
+/**
+ * The PrairieLearn folder works as PrairieLearn uses it: its run script, given a folder laid out
+ * like /grade (student/ holds the student's files; GRADE_ROOT names it), grades them into
+ * results/results.json in PrairieLearn's format with java alone, finding the grading tree and lib/
+ * beside itself as in the image. The submission is the solution with a stubbed sphere: Task 2's
+ * tests score nothing, every other task's full, so the score is below 1.
+ */
+public class PrairieLearnBundleTest {
+    @ClassRule
+    public static final TemporaryFolder FOLDER = new TemporaryFolder();
+
+    @Test(timeout = 600_000)
+    @SuppressWarnings("unchecked")
+    public void runGradesTheStudentFilesIntoPrairieLearnsResultsJson() throws Exception {
+        Path folder = FOLDER.getRoot().toPath().resolve("prairielearn");
+        KitInputs kit = new KitInputs();
+        PrairieLearnBundle.build(Path.of("."), folder, "example/ray1-grader:test", kit.classes, kit.libraries);
+        Path run = folder.resolve("ray1-grader/run");
+        assertEquals("rwxr-xr-x", PosixFilePermissions.toString(Files.getPosixFilePermissions(run)));
+        assertTrue(Files.readString(run).startsWith("#!/usr/bin/env bash\n"));
+        assertTrue(Files.readString(folder.resolve("Dockerfile")).contains("FROM eclipse-temurin:17-jdk\n"));
+        Map<String, Object> options = (Map<String, Object>) new Gson()
+                .fromJson(Files.readString(folder.resolve("info.json")), Map.class).get("externalGradingOptions");
+        assertEquals("example/ray1-grader:test", options.get("image"));
+        assertEquals("/ray1-grader/run", options.get("entrypoint"));
+        assertTrue(Files.readString(folder.resolve("README.md")).contains("file-names=\"ClampTexture.java,"));
+
+        Path root = FOLDER.getRoot().toPath().resolve("grade");
+        KitInputs.writeSubmissionWithStubbedSphere(root.resolve("student"));
+        assertEquals(0, KitInputs.runScript(run, "GRADE_ROOT", root, FOLDER.getRoot().toPath().resolve("run.log")));
+
+        Map<String, Object> results = new Gson().fromJson(Files.readString(root.resolve("results/results.json")), Map.class);
+        assertEquals(true, results.get("gradable"));
+        double score = (Double) results.get("score");
+        assertTrue("score " + score, score > 0 && score < 1);
+        double[] points = new double[7];
+        double[] possible = new double[7];
+        for (Map<String, Object> t : (List<Map<String, Object>>) results.get("tests")) {
+            String name = (String) t.get("name");
+            if (name.endsWith("(bonus)") || !name.startsWith("Task ")) {
+                continue;
+            }
+            int task = Integer.parseInt(name.substring("Task ".length(), name.indexOf(' ', "Task ".length())));
+            points[task] += (Double) t.get("points");
+            possible[task] += (Double) t.get("max_points");
+        }
+        assertTrue("Task 2 has points", possible[2] > 0);
+        assertEquals("a stubbed sphere scores nothing in Task 2", 0, points[2], 0);
+        for (int task : new int[] {1, 3, 4, 5}) {
+            assertTrue("task " + task + " has points", possible[task] > 0);
+            assertEquals("task " + task + " keeps its points", possible[task], points[task], 0);
+        }
+    }
+}
