@@ -70,7 +70,12 @@ final class RenderFeedback {
                 text.append(line).append('\n');
             }
         }
-        StringBuilder html = new StringBuilder("<pre>").append(escape(text.toString().strip())).append("</pre>\n<p>");
+        StringBuilder html = new StringBuilder("<pre>").append(escape(text.toString().strip())).append("</pre>\n");
+        String mistake = KnownMistakes.of(yours, reference);
+        if (mistake != null) {
+            html.append("<p><strong>").append(escape(mistake)).append("</strong></p>\n");
+        }
+        html.append("<p>");
         html.append(figure(yours, "your render")).append(figure(reference, "the reference"));
         if (difference != null) {
             html.append(figure(difference, "where they differ"));

@@ -146,6 +146,28 @@ public class GraderTest {
         assertTrue(results.toString(), results.toString().contains("';' expected"));
     }
 
+    /** A camera that measures v from the top renders the reference upside down: its render tests say so. */
+    @Test(timeout = 600_000)
+    @SuppressWarnings("unchecked")
+    public void aFlippedCameraIsNamedInItsRenderTests() throws Exception {
+        Path flat = FOLDER.getRoot().toPath().resolve("flipped");
+        Files.createDirectories(flat);
+        for (String file : StudentFiles.in(PROJECT).keySet()) {
+            Files.copy(PROJECT.resolve(file), flat.resolve(Path.of(file).getFileName().toString()));
+        }
+        for (String camera : List.of("PerspectiveCamera.java", "OrthographicCamera.java")) {
+            Files.copy(Path.of("src/instructorTest/variants/camera-flipped-v/ray/camera").resolve(camera), flat.resolve(camera),
+                    java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        }
+        Map<String, Object> results = grade(flat, "flipped");
+        List<Map<String, Object>> renders = ((List<Map<String, Object>>) results.get("tests")).stream()
+                .filter(t -> ((String) t.get("name")).contains("CameraRenderTest.")).collect(Collectors.toList());
+        assertTrue("the camera's render tests ran", !renders.isEmpty());
+        for (Map<String, Object> t : renders) {
+            assertTrue(t.toString(), ((String) t.get("output")).contains("Your image matches the reference flipped upside down"));
+        }
+    }
+
     /**
      * When the grader itself cannot grade (the submission path does not exist), it still writes
      * results.json: 0 points and the reason, replacing whatever an earlier run left there, readable
