@@ -33,10 +33,10 @@ public final class Progress {
         show(false);
     }
 
-    /** The final state, whenever the last update was. */
+    /** At a terminal, the final state (the last update may have been too soon to show), and the line ended. */
     public synchronized void finish() {
-        show(true);
         if (terminal) {
+            show(true);
             err.println();
         }
     }
