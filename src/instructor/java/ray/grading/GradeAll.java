@@ -79,7 +79,12 @@ public final class GradeAll implements Callable<Integer> {
                         log.println("skipped " + s.id() + ": " + results(s) + " is newer than the submission");
                         progress.skipped();
                     } else {
-                        grade(s);
+                        try {
+                            grade(s);
+                        } catch (Exception | Error e) {
+                            // One submission's trouble (say, a full disk) is its row's 0, not the class's stack trace.
+                            log.println("failed to grade " + s.id() + " (score 0): " + e);
+                        }
                         progress.graded();
                     }
                     return null;
