@@ -2,10 +2,7 @@ package ray.grading;
 
 import com.google.gson.GsonBuilder;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -81,16 +78,7 @@ public final class GradescopeResults {
     /** Writes the JSON atomically: an autograder that is stopped never leaves half a file. */
     public static void write(Map<String, Object> results, Path file) throws IOException {
         String json = new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(results);
-        Path folder = file.toAbsolutePath().getParent();
-        Files.createDirectories(folder);
-        Path temporary = Files.createTempFile(folder, ".results", ".tmp");
-        try {
-            Files.writeString(temporary, json + "\n", StandardCharsets.UTF_8);
-            Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING);
-            ReadableFiles.makeReadable(file);
-        } finally {
-            Files.deleteIfExists(temporary);
-        }
+        ReadableFiles.writeAtomically(file, json + "\n");
     }
 
     /**

@@ -1,0 +1,136 @@
+package ray.grading;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code gradle gradeAll -Psubmissions=DIR}: grades every submission in DIR (subfolders and .zip
+ * files, or Gradescope's "Export Submissions" folder with its submission_metadata.yml), a few at
+ * once, into OUT/&lt;id&gt;/results.json (with the grader's log beside it), then writes
+ * OUT/gradebook.csv and OUT/index.html for the whole class.
+ *
+ * <p>It resumes: a submission whose results.json is newer than the submission is not graded again,
+ * so a run that was stopped, or one after a few late submissions were added, grades only what is new.
+ */
+@Command(name = "gradeAll", mixinStandardHelpOptions = true, description = "Grades every submission in a folder.")
+public final class GradeAll implements Callable<Integer> {
+    @Option(names = "--project", required = true, description = "The instructor's project folder.")
+    Path project;
+
+    @Option(names = "--classpath", required = true, description = "Libraries the tests need (JUnit, ...).")
+    String classpath;
+
+    @Option(names = "--submissions", required = true, description = "A folder of submissions (subfolders or .zip files).")
+    Path submissions;
+
+    @Option(names = "--out", description = "Where the results go (default: ${DEFAULT-VALUE}).")
+    Path out = Path.of("build/gradeAll");
+
+    // Half the cores: each grading also runs test JVMs and javac, which use the other half.
+    @Option(names = "--jobs", description = "Submissions graded at once (default: half the cores, at least 1).")
+    int jobs = Math.max(1, Runtime.getRuntime().availableProcessors() / 2);
+
+    /** Where the log and progress lines go (the original stderr, as System.err is routed per grader). */
+    PrintStream log;
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new GradeAll()).execute(args));
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        PrintStream err = ThreadOutput.install();
+        if (log == null) {
+            log = err;
+        }
+        List<ClassSubmission> all;
+        try {
+            if (jobs < 1) {
+                throw new IllegalArgumentException("--jobs must be at least 1, not " + jobs);
+            }
+            all = ClassSubmission.in(submissions, out);
+        } catch (IllegalArgumentException e) {
+            log.println("error: " + e.getMessage());
+            return 2;
+        }
+        Files.createDirectories(out);
+        long start = System.nanoTime();
+        Progress progress = new Progress(log, System.console() != null && log == err, all.size());
+        ExecutorService pool = Executors.newFixedThreadPool(jobs);
+        List<Future<?>> running = new ArrayList<>();
+        try {
+            for (ClassSubmission s : all) {
+                running.add(pool.submit(() -> {
+                    if (upToDate(s)) {
+                        log.println("skipped " + s.id() + ": " + results(s) + " is newer than the submission");
+                        progress.skipped();
+                    } else {
+                        try {
+                            grade(s);
+                        } catch (Exception | Error e) {
+                            // One submission's trouble (say, a full disk) is its row's 0, not the class's stack trace.
+                            log.println("failed to grade " + s.id() + " (score 0): " + e);
+                        }
+                        progress.graded();
+                    }
+                    return null;
+                }));
+            }
+            for (Future<?> f : running) {
+                f.get();
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+        progress.finish();
+        Map<ClassSubmission, GradedResult> graded = new LinkedHashMap<>();
+        for (ClassSubmission s : all) {
+            graded.put(s, GradedResult.read(results(s)));
+        }
+        ReadableFiles.writeAtomically(out.resolve("gradebook.csv"), Gradebook.csv(graded));
+        ReadableFiles.writeAtomically(out.resolve("index.html"), ClassReport.html(graded));
+        log.println("graded " + all.size() + " submissions in " + Progress.duration((System.nanoTime() - start) / 1e9)
+                + ": " + out.resolve("gradebook.csv") + ", " + out.resolve("index.html"));
+        return 0;
+    }
+
+    private Path results(ClassSubmission s) {
+        return out.resolve(s.id()).resolve("results.json");
+    }
+
+    private boolean upToDate(ClassSubmission s) throws IOException {
+        Path results = results(s);
+        return Files.isRegularFile(results) && Files.getLastModifiedTime(results).compareTo(s.lastModified()) > 0;
+    }
+
+    /** One Grader, in this JVM, its console output routed to OUT/&lt;id&gt;/grader.log. */
+    private void grade(ClassSubmission s) throws IOException {
+        Path folder = out.resolve(s.id());
+        Files.createDirectories(folder);
+        try (OutputStream graderLog = Files.newOutputStream(folder.resolve("grader.log"))) {
+            ThreadOutput.route(graderLog);
+            // A submission that cannot be graded still has a results.json (0 points and why): the Grader writes it.
+            int status = new CommandLine(new Grader()).execute("--project", project.toString(), "--classpath", classpath,
+                    "--submission", s.path().toString(), "--out", folder.toString());
+            if (status != 0) {
+                log.println("failed to grade " + s.id() + " (score 0): see " + folder.resolve("results.json"));
+            }
+        } finally {
+            ThreadOutput.route(null);
+        }
+    }
+}
