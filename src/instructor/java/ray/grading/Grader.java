@@ -59,6 +59,8 @@ public final class Grader implements Callable<Integer> {
 
     /** This run's own work folder under {@code out}. */
     private Path work;
+    /** Known mistakes that make a failed render test's image, by test id (VariantMistakes). */
+    private final Map<String, String> mistakeNames = new LinkedHashMap<>();
 
     @Override
     public Integer call() throws Exception {
@@ -76,7 +78,7 @@ public final class Grader implements Callable<Integer> {
             redaction = Redaction.of(project);
             outcomes = redaction.redact(outcomes);
             // Taken now: the render tests' pictures are in the work folder, which goes below.
-            pictures = RenderFeedback.of(outcomes, work.resolve("instructor"));
+            pictures = RenderFeedback.of(outcomes, work.resolve("instructor"), mistakeNames);
         } catch (Exception | Error e) {
             // Whatever went wrong, the platform reads a result: 0 points and why, not an earlier student's file.
             String why = "The autograder could not grade this submission: " + (e.getMessage() == null ? e.toString() : e.getMessage());
@@ -161,10 +163,33 @@ public final class Grader implements Callable<Integer> {
                 outcomes.addAll(allFailed(task, why));
             } else {
                 TestProcess tests = new TestProcess(instructor, taskDir.resolve("classes"), againstInstructor, taskDir.resolve("test-run"));
-                outcomes.addAll(runOrFail(tests, task));
+                List<TestOutcome> taskOutcomes = runOrFail(tests, task);
+                outcomes.addAll(taskOutcomes);
+                nameMistakes(instructor, task, taskOutcomes, studentFiles, againstInstructor, taskDir.resolve("mistakes"));
             }
         }
         return outcomes;
+    }
+
+    /**
+     * When some of the task's render tests failed, the known mistakes of the task that make the same
+     * images (kept for {@link RenderFeedback}); never a reason to fail grading.
+     */
+    private void nameMistakes(Path instructor, int task, List<TestOutcome> taskOutcomes, Map<String, Integer> studentFiles,
+            String againstInstructor, Path mistakesWork) {
+        List<TestOutcome> failedRenders = taskOutcomes.stream()
+                .filter(t -> !t.passed() && t.className().startsWith("ray.endtoend.")).collect(java.util.stream.Collectors.toList());
+        if (failedRenders.isEmpty()) {
+            return;
+        }
+        try {
+            mistakeNames.putAll(VariantMistakes.named(instructor, failedRenders,
+                    VariantMistakes.of(instructor, task, studentFiles), againstInstructor, mistakesWork));
+        } catch (IOException | RuntimeException e) {
+            // The feedback goes without a name; the grade is unchanged.
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /** The task's tests, or all of them failed with the reason when the test JVM cannot run them at all. */

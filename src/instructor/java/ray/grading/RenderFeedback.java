@@ -34,7 +34,7 @@ final class RenderFeedback {
     }
 
     /** For each failed render test whose pictures exist under {@code tree}: its id → the HTML to show. */
-    static Map<String, String> of(List<TestOutcome> outcomes, Path tree) {
+    static Map<String, String> of(List<TestOutcome> outcomes, Path tree, Map<String, String> mistakeNames) {
         Map<String, String> html = new LinkedHashMap<>();
         for (TestOutcome t : outcomes) {
             if (t.passed() || !t.className().startsWith("ray.endtoend.")) {
@@ -53,7 +53,7 @@ final class RenderFeedback {
             try {
                 if (Files.isRegularFile(yours) && Files.isRegularFile(reference)) {
                     html.put(t.id(), page(t.message(), scene.group(1), ImageIO.read(yours.toFile()), ImageIO.read(reference.toFile()),
-                            Files.isRegularFile(difference) ? ImageIO.read(difference.toFile()) : null));
+                            Files.isRegularFile(difference) ? ImageIO.read(difference.toFile()) : null, mistakeNames.get(t.id())));
                 }
             } catch (IOException | RuntimeException e) {
                 // No pictures for this test: its message alone still says what is wrong.
@@ -62,8 +62,8 @@ final class RenderFeedback {
         return html;
     }
 
-    private static String page(String message, String sceneFile, BufferedImage yours, BufferedImage reference, BufferedImage difference)
-            throws IOException {
+    private static String page(String message, String sceneFile, BufferedImage yours, BufferedImage reference, BufferedImage difference,
+            String knownMistake) throws IOException {
         StringBuilder text = new StringBuilder();
         for (String line : message.split("\n")) {
             if (!line.strip().startsWith(REPORT_LINE)) {
@@ -71,7 +71,7 @@ final class RenderFeedback {
             }
         }
         StringBuilder html = new StringBuilder("<pre>").append(escape(text.toString().strip())).append("</pre>\n");
-        String mistake = KnownMistakes.of(yours, reference);
+        String mistake = knownMistake != null ? knownMistake : KnownMistakes.of(yours, reference);
         if (mistake != null) {
             html.append("<p><strong>").append(escape(mistake)).append("</strong></p>\n");
         }

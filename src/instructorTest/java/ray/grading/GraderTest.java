@@ -146,6 +146,26 @@ public class GraderTest {
         assertTrue(results.toString(), results.toString().contains("';' expected"));
     }
 
+    /** A sphere that takes the far root renders like the known mistake of that name: its render tests say so. */
+    @Test(timeout = 600_000)
+    @SuppressWarnings("unchecked")
+    public void aFarRootSphereIsNamedInItsRenderTests() throws Exception {
+        Path flat = FOLDER.getRoot().toPath().resolve("far-root");
+        Files.createDirectories(flat);
+        for (String file : StudentFiles.in(PROJECT).keySet()) {
+            Files.copy(PROJECT.resolve(file), flat.resolve(Path.of(file).getFileName().toString()));
+        }
+        Files.copy(Path.of("src/instructorTest/variants/sphere-far-root/ray/surface/Sphere.java"), flat.resolve("Sphere.java"),
+                java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        Map<String, Object> results = grade(flat, "far-root");
+        Map<String, Object> onesphere = ((List<Map<String, Object>>) results.get("tests")).stream()
+                .filter(t -> ((String) t.get("name")).contains("SphereRenderTest.rendersLikeTheReference[one-sphere]"))
+                .findFirst().orElseThrow();
+        assertEquals("failed", onesphere.get("status"));
+        assertTrue(onesphere.toString(), ((String) onesphere.get("output")).contains(
+                "Your render matches a known mistake&#39;s, whose code takes the far root".replace("&#39;", "'")));
+    }
+
     /** A camera that measures v from the top renders the reference upside down: its render tests say so. */
     @Test(timeout = 600_000)
     @SuppressWarnings("unchecked")
