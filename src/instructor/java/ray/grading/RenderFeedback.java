@@ -71,7 +71,9 @@ final class RenderFeedback {
             }
         }
         StringBuilder html = new StringBuilder("<pre>").append(escape(text.toString().strip())).append("</pre>\n");
-        String mistake = knownMistake != null ? knownMistake : KnownMistakes.of(yours, reference);
+        // A flip or mirror has the fuller advice; the known-wrong versions' names come next.
+        String flipped = KnownMistakes.of(yours, reference);
+        String mistake = flipped != null ? flipped : knownMistake;
         if (mistake != null) {
             html.append("<p><strong>").append(escape(mistake)).append("</strong></p>\n");
         }
