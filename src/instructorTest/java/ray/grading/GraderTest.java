@@ -146,18 +146,26 @@ public class GraderTest {
         assertTrue(results.toString(), results.toString().contains("';' expected"));
     }
 
-    /** A sphere that takes the far root renders like the known mistake of that name: its render tests say so. */
-    @Test(timeout = 600_000)
-    @SuppressWarnings("unchecked")
-    public void aFarRootSphereIsNamedInItsRenderTests() throws Exception {
-        Path flat = FOLDER.getRoot().toPath().resolve("far-root");
+    /** Flat files as Gradescope uploads them: the solution's student files, with the known-wrong variant's in their place. */
+    private static Path solutionWithVariant(String variant) throws Exception {
+        Path flat = FOLDER.getRoot().toPath().resolve("submission-" + variant);
         Files.createDirectories(flat);
         for (String file : StudentFiles.in(PROJECT).keySet()) {
             Files.copy(PROJECT.resolve(file), flat.resolve(Path.of(file).getFileName().toString()));
         }
-        Files.copy(Path.of("src/instructorTest/variants/sphere-far-root/ray/surface/Sphere.java"), flat.resolve("Sphere.java"),
-                java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-        Map<String, Object> results = grade(flat, "far-root");
+        try (Stream<Path> files = Files.walk(Path.of("src/instructorTest/variants", variant))) {
+            for (Path file : files.filter(p -> p.toString().endsWith(".java")).collect(Collectors.toList())) {
+                Files.copy(file, flat.resolve(file.getFileName().toString()), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            }
+        }
+        return flat;
+    }
+
+    /** A sphere that takes the far root renders like the known mistake of that name: its render tests say so. */
+    @Test(timeout = 600_000)
+    @SuppressWarnings("unchecked")
+    public void aFarRootSphereIsNamedInItsRenderTests() throws Exception {
+        Map<String, Object> results = grade(solutionWithVariant("sphere-far-root"), "far-root");
         Map<String, Object> onesphere = ((List<Map<String, Object>>) results.get("tests")).stream()
                 .filter(t -> ((String) t.get("name")).contains("SphereRenderTest.rendersLikeTheReference[one-sphere]"))
                 .findFirst().orElseThrow();
@@ -170,16 +178,7 @@ public class GraderTest {
     @Test(timeout = 600_000)
     @SuppressWarnings("unchecked")
     public void aFlippedCameraIsNamedInItsRenderTests() throws Exception {
-        Path flat = FOLDER.getRoot().toPath().resolve("flipped");
-        Files.createDirectories(flat);
-        for (String file : StudentFiles.in(PROJECT).keySet()) {
-            Files.copy(PROJECT.resolve(file), flat.resolve(Path.of(file).getFileName().toString()));
-        }
-        for (String camera : List.of("PerspectiveCamera.java", "OrthographicCamera.java")) {
-            Files.copy(Path.of("src/instructorTest/variants/camera-flipped-v/ray/camera").resolve(camera), flat.resolve(camera),
-                    java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-        }
-        Map<String, Object> results = grade(flat, "flipped");
+        Map<String, Object> results = grade(solutionWithVariant("camera-flipped-v"), "flipped");
         List<Map<String, Object>> renders = ((List<Map<String, Object>>) results.get("tests")).stream()
                 .filter(t -> ((String) t.get("name")).contains("CameraRenderTest.")).collect(Collectors.toList());
         assertTrue("the camera's render tests ran", !renders.isEmpty());
