@@ -174,6 +174,21 @@ public class GraderTest {
                 "Your render matches a known mistake&#39;s, whose code takes the far root".replace("&#39;", "'")));
     }
 
+    /** Spheres with an inward normal or that assume a unit direction are named in their render tests too. */
+    @Test(timeout = 900_000)
+    @SuppressWarnings("unchecked")
+    public void anInwardNormalAndAUnitDirectionAreNamed() throws Exception {
+        for (String[] c : new String[][] {{"sphere-normal-inward", "gives the normal pointing into the sphere"},
+                {"sphere-unit-direction-assumed", "assumes the ray's direction has unit length"}}) {
+            Map<String, Object> results = grade(solutionWithVariant(c[0]), c[0]);
+            Map<String, Object> onesphere = ((List<Map<String, Object>>) results.get("tests")).stream()
+                    .filter(t -> ((String) t.get("name")).contains("SphereRenderTest.rendersLikeTheReference[one-sphere]"))
+                    .findFirst().orElseThrow();
+            assertEquals(c[0], "failed", onesphere.get("status"));
+            assertTrue(onesphere.toString(), ((String) onesphere.get("output")).contains(VariantMistakes.MATCHES + c[1]));
+        }
+    }
+
     /** A camera that measures v from the top renders the reference upside down: its render tests say so. */
     @Test(timeout = 600_000)
     @SuppressWarnings("unchecked")
