@@ -67,7 +67,7 @@ public final class Grader implements Callable<Integer> {
         long start = System.nanoTime();
         StringBuilder output = new StringBuilder();
         List<TestOutcome> outcomes;
-        Map<String, String> pictures;
+        Map<String, RenderFeedback.Shown> pictures;
         Redaction redaction;
         Path resultsFile = out.resolve("results.json");
         try {
@@ -93,8 +93,10 @@ public final class Grader implements Callable<Integer> {
         }
         double seconds = (System.nanoTime() - start) / 1e9;
         String shown = redaction.redact(output.toString());
-        Map<String, Object> results = format == Format.prairielearn ? PrairieLearnResults.of(outcomes, shown)
-                : GradescopeResults.of(outcomes, shown, seconds, pictures);
+        Map<String, String> pages = new LinkedHashMap<>();
+        pictures.forEach((id, p) -> pages.put(id, p.html));
+        Map<String, Object> results = format == Format.prairielearn ? PrairieLearnResults.of(outcomes, shown, pictures)
+                : GradescopeResults.of(outcomes, shown, seconds, pages);
         writeResults(results, resultsFile);
         System.out.print(output);
         System.out.print(GradescopeResults.table(outcomes));

@@ -22,14 +22,19 @@ import java.util.Map;
  * Gradescope (hidden, after the due date, after publishing) is shown as "Hidden test N" with its
  * points and no message or output, giving nothing of the test away.
  *
- * <p>Images: every list is empty for now; renders of the student's scenes can go there later as
- * {@code {"label", "url": "data:image/png;base64,…"}}.
+ * <p>Images: a failed render test's own list holds the student's render, the reference and their
+ * difference as {@code {"label", "url": "data:image/png;base64,…"}} (RenderFeedback); the top-level list is empty.
  */
 public final class PrairieLearnResults {
     private PrairieLearnResults() {
     }
 
     public static Map<String, Object> of(List<TestOutcome> outcomes, String output) {
+        return of(outcomes, output, Map.of());
+    }
+
+    /** The same, with a failed render test's pictures as its images and the known mistake it is after its message. */
+    static Map<String, Object> of(List<TestOutcome> outcomes, String output, Map<String, RenderFeedback.Shown> pictures) {
         List<Map<String, Object>> tests = new ArrayList<>();
         double earned = 0;
         double max = 0;
@@ -40,9 +45,10 @@ public final class PrairieLearnResults {
             test.put("name", visible ? GradescopeResults.name(t) : "Hidden test " + ++hidden + (t.bonus() ? " (bonus)" : ""));
             test.put("points", t.earned());
             test.put("max_points", t.possible());
-            test.put("message", visible ? t.message() : "");
+            RenderFeedback.Shown shown = visible ? pictures.get(t.id()) : null;
+            test.put("message", !visible ? "" : shown != null && shown.advice != null ? t.message() + "\n" + shown.advice : t.message());
             test.put("output", "");
-            test.put("images", List.of());
+            test.put("images", shown != null ? shown.images : List.of());
             tests.add(test);
             earned += t.earned();
             max += t.possible();

@@ -33,9 +33,24 @@ final class RenderFeedback {
     private RenderFeedback() {
     }
 
-    /** For each failed render test whose pictures exist under {@code tree}: its id → the HTML to show. */
-    static Map<String, String> of(List<TestOutcome> outcomes, Path tree, Map<String, String> mistakeNames) {
-        Map<String, String> html = new LinkedHashMap<>();
+    /** What one failed render test shows: as an HTML page (Gradescope), or as images and advice (PrairieLearn). */
+    static final class Shown {
+        final String html;
+        /** The three pictures as PrairieLearn's {label, url} entries, url a data URL. */
+        final List<Map<String, Object>> images;
+        /** The known mistake the render is, or null. */
+        final String advice;
+
+        Shown(String html, List<Map<String, Object>> images, String advice) {
+            this.html = html;
+            this.images = images;
+            this.advice = advice;
+        }
+    }
+
+    /** For each failed render test whose pictures exist under {@code tree}: its id → what to show. */
+    static Map<String, Shown> of(List<TestOutcome> outcomes, Path tree, Map<String, String> mistakeNames) {
+        Map<String, Shown> html = new LinkedHashMap<>();
         for (TestOutcome t : outcomes) {
             if (t.passed() || !t.className().startsWith("ray.endtoend.")) {
                 continue;
@@ -62,7 +77,7 @@ final class RenderFeedback {
         return html;
     }
 
-    private static String page(String message, String sceneFile, BufferedImage yours, BufferedImage reference, BufferedImage difference,
+    private static Shown page(String message, String sceneFile, BufferedImage yours, BufferedImage reference, BufferedImage difference,
             String knownMistake) throws IOException {
         StringBuilder text = new StringBuilder();
         for (String line : message.split("\n")) {
@@ -78,9 +93,10 @@ final class RenderFeedback {
             html.append("<p><strong>").append(escape(mistake)).append("</strong></p>\n");
         }
         html.append("<p>");
-        html.append(figure(yours, "your render")).append(figure(reference, "the reference"));
+        List<Map<String, Object>> images = new java.util.ArrayList<>();
+        html.append(figure(yours, "your render", images)).append(figure(reference, "the reference", images));
         if (difference != null) {
-            html.append(figure(difference, "where they differ"));
+            html.append(figure(difference, "where they differ", images));
         }
         html.append("</p>\n");
         int[] worst = worstPixel(yours, reference);
@@ -89,7 +105,7 @@ final class RenderFeedback {
                     .append(") (from the left and from the top). See why your code colors it so:</p>\n<pre>gradle run --args=\"trace ")
                     .append(escape(sceneFile)).append(' ').append(worst[0]).append(' ').append(worst[1]).append("\"</pre>\n");
         }
-        return html.toString();
+        return new Shown(html.toString(), images, mistake);
     }
 
     /** The pixel (x from the left, y from the top) where the two differ most in any channel, or null when their sizes differ. */
@@ -114,8 +130,10 @@ final class RenderFeedback {
         return worst;
     }
 
-    private static String figure(BufferedImage image, String caption) throws IOException {
-        return "<img alt=\"" + caption + "\" title=\"" + caption + "\" src=\"data:image/png;base64," + base64(shrunk(image)) + "\"> ";
+    private static String figure(BufferedImage image, String caption, List<Map<String, Object>> images) throws IOException {
+        String url = "data:image/png;base64," + base64(shrunk(image));
+        images.add(Map.of("label", caption, "url", url));
+        return "<img alt=\"" + caption + "\" title=\"" + caption + "\" src=\"" + url + "\"> ";
     }
 
     private static BufferedImage shrunk(BufferedImage image) {

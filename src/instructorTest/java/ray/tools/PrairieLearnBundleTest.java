@@ -65,5 +65,13 @@ public class PrairieLearnBundleTest {
             assertTrue("task " + task + " has points", possible[task] > 0);
             assertEquals("task " + task + " keeps its points", possible[task], points[task], 0);
         }
+        // The stubbed sphere's failed render shows its pictures: the render, the reference and their difference.
+        Map<String, Object> render = ((List<Map<String, Object>>) results.get("tests")).stream()
+                .filter(t -> ((String) t.get("name")).contains("SphereRenderTest.rendersLikeTheReference[one-sphere]"))
+                .findFirst().orElseThrow();
+        List<Map<String, Object>> images = (List<Map<String, Object>>) render.get("images");
+        assertEquals(3, images.size());
+        assertEquals("your render", images.get(0).get("label"));
+        assertTrue(((String) images.get(0).get("url")).startsWith("data:image/png;base64,"));
     }
 }
