@@ -189,6 +189,23 @@ public class GraderTest {
         }
     }
 
+    /** A group that keeps the first hit and a triangle without β + γ ≤ 1 are named in each of their failed render tests. */
+    @Test(timeout = 900_000)
+    @SuppressWarnings("unchecked")
+    public void aFirstHitGroupAndAParallelogramTriangleAreNamed() throws Exception {
+        for (String[] c : new String[][] {{"group-first-hit", "GroupRenderTest.", "returns the first child that is hit"},
+                {"triangle-no-sum-check", "TriangleRenderTest.", "checks beta ≥ 0 and gamma ≥ 0 but not beta + gamma ≤ 1"}}) {
+            Map<String, Object> results = grade(solutionWithVariant(c[0]), c[0]);
+            List<Map<String, Object>> failed = ((List<Map<String, Object>>) results.get("tests")).stream()
+                    .filter(t -> ((String) t.get("name")).contains(c[1]) && "failed".equals(t.get("status")))
+                    .collect(Collectors.toList());
+            assertTrue(c[0] + " fails some of its render tests", !failed.isEmpty());
+            for (Map<String, Object> t : failed) {
+                assertTrue(t.get("name") + ": " + t.get("output"), ((String) t.get("output")).contains(VariantMistakes.MATCHES + c[2]));
+            }
+        }
+    }
+
     /** A camera that measures v from the top renders the reference upside down: its render tests say so. */
     @Test(timeout = 600_000)
     @SuppressWarnings("unchecked")
