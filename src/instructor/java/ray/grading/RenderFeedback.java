@@ -11,9 +11,8 @@ import java.util.Base64;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
+import ray.image.ImageDiff;
 
 /**
  * Pictures for a failed render test, for the platform to show beside its message: the student's
@@ -26,8 +25,6 @@ import javax.imageio.ImageIO;
 final class RenderFeedback {
     /** Width of the inlined pictures: small enough for a results file of many failures, large enough to see what is wrong. */
     static final int WIDTH = 160;
-    private static final Pattern SCENE = Pattern.compile("^(\\S+\\.xml) does not look like", Pattern.MULTILINE);
-    private static final Pattern PARAMETER = Pattern.compile("\\[([^\\]]+)\\]$");
     private static final String REPORT_LINE = "See your image, the reference and where they differ in";
 
     private RenderFeedback() {
@@ -52,24 +49,14 @@ final class RenderFeedback {
     static Map<String, Shown> of(List<TestOutcome> outcomes, Path tree, Map<String, String> mistakeNames) {
         Map<String, Shown> html = new LinkedHashMap<>();
         for (TestOutcome t : outcomes) {
-            if (t.passed() || !t.className().startsWith("ray.endtoend.")) {
+            FailedRender failed = FailedRender.of(t, tree);
+            if (failed == null || !Files.isRegularFile(failed.reference)) {
                 continue;
             }
-            Matcher parameter = PARAMETER.matcher(t.method());
-            Matcher scene = SCENE.matcher(t.message().replaceFirst("^\\[[^\\]]*\\] ", ""));
-            if (!parameter.find() || !scene.find()) {
-                continue;
-            }
-            String simpleName = t.className().substring(t.className().lastIndexOf('.') + 1);
-            Path folder = tree.resolve("build/reports/render-diff").resolve(simpleName);
-            Path yours = folder.resolve(parameter.group(1) + "-yours.png");
-            Path reference = folder.resolve(parameter.group(1) + "-reference.png");
-            Path difference = folder.resolve(parameter.group(1) + "-diff.png");
             try {
-                if (Files.isRegularFile(yours) && Files.isRegularFile(reference)) {
-                    html.put(t.id(), page(t.message(), scene.group(1), ImageIO.read(yours.toFile()), ImageIO.read(reference.toFile()),
-                            Files.isRegularFile(difference) ? ImageIO.read(difference.toFile()) : null, mistakeNames.get(t.id())));
-                }
+                html.put(t.id(), page(t.message(), failed.sceneFile, ImageIO.read(failed.yours.toFile()),
+                        ImageIO.read(failed.reference.toFile()),
+                        Files.isRegularFile(failed.difference) ? ImageIO.read(failed.difference.toFile()) : null, mistakeNames.get(t.id())));
             } catch (IOException | RuntimeException e) {
                 // No pictures for this test: its message alone still says what is wrong.
             }
@@ -110,24 +97,19 @@ final class RenderFeedback {
 
     /** The pixel (x from the left, y from the top) where the two differ most in any channel, or null when their sizes differ. */
     static int[] worstPixel(BufferedImage a, BufferedImage b) {
-        if (a.getWidth() != b.getWidth() || a.getHeight() != b.getHeight()) {
+        // The render tests' own per-pixel difference (the largest of the three channels').
+        ImageDiff.Result diff = ImageDiff.compare(a, b);
+        if (!diff.sameSize()) {
             return null;
         }
-        int[] worst = null;
-        int most = -1;
         for (int y = 0; y < a.getHeight(); y++) {
             for (int x = 0; x < a.getWidth(); x++) {
-                int p = a.getRGB(x, y);
-                int q = b.getRGB(x, y);
-                int d = Math.max(Math.abs(((p >> 16) & 255) - ((q >> 16) & 255)),
-                        Math.max(Math.abs(((p >> 8) & 255) - ((q >> 8) & 255)), Math.abs((p & 255) - (q & 255))));
-                if (d > most) {
-                    most = d;
-                    worst = new int[] {x, y};
+                if (diff.differenceAt(x, y) == diff.maxDifference()) {
+                    return new int[] {x, y};
                 }
             }
         }
-        return worst;
+        return null;
     }
 
     private static String figure(BufferedImage image, String caption, List<Map<String, Object>> images) throws IOException {

@@ -31,8 +31,6 @@ final class VariantMistakes {
     static final String VARIANTS = "src/instructorTest/variants";
     static final String MATCHES = "Your render matches a known mistake's, whose code ";
     private static final Pattern KNOWN_WRONG = Pattern.compile("Known wrong: (.*?)\\s*\\*/", Pattern.DOTALL);
-    private static final Pattern PARAMETER = Pattern.compile("\\[([^\\]]+)\\]$");
-    private static final Pattern SCENE = Pattern.compile("(\\S+\\.xml) does not look like");
     /** The renders of one scene by all of a task's known mistakes take seconds; this is the backstop. */
     private static final int RENDER_LIMIT_SECONDS = 120;
 
@@ -90,15 +88,10 @@ final class VariantMistakes {
         Map<String, Path> yours = new LinkedHashMap<>();
         Map<String, String> sceneFiles = new LinkedHashMap<>();
         for (TestOutcome t : failed) {
-            Matcher parameter = PARAMETER.matcher(t.method());
-            Matcher scene = SCENE.matcher(t.message());
-            if (parameter.find() && scene.find()) {
-                String simpleName = t.className().substring(t.className().lastIndexOf('.') + 1);
-                Path render = tree.resolve("build/reports/render-diff").resolve(simpleName).resolve(parameter.group(1) + "-yours.png");
-                if (Files.isRegularFile(render)) {
-                    yours.put(t.id(), render);
-                    sceneFiles.put(t.id(), scene.group(1));
-                }
+            FailedRender render = FailedRender.of(t, tree);
+            if (render != null) {
+                yours.put(t.id(), render.yours);
+                sceneFiles.put(t.id(), render.sceneFile);
             }
         }
         Map<String, String> names = new LinkedHashMap<>();
