@@ -12,7 +12,7 @@ import ray.image.ImageDiff;
  * render tests' own comparison ({@link ImageDiff}), so a correct render, which matches the reference
  * itself, never gets a name.
  */
-final class KnownMistakes {
+public final class KnownMistakes {
     /** A mistake that shows as the reference changed by {@code change}, with what to tell the student. */
     private static final class Mistake {
         final UnaryOperator<BufferedImage> change;
@@ -49,7 +49,8 @@ final class KnownMistakes {
         return null;
     }
 
-    static BufferedImage flippedVertically(BufferedImage image) {
+    /** The image upside down (also a defect the render tests' tolerance survey must catch). */
+    public static BufferedImage flippedVertically(BufferedImage image) {
         BufferedImage out = new BufferedImage(image.getWidth(), image.getHeight(), BufferedImage.TYPE_INT_RGB);
         for (int y = 0; y < image.getHeight(); y++) {
             for (int x = 0; x < image.getWidth(); x++) {

@@ -2,6 +2,8 @@ package ray.numerics;
 
 import java.lang.reflect.Field;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
@@ -35,21 +37,17 @@ final class MovedScenes {
      */
     static Scene load(String name, double scale, Vec3 translate, int shrink) {
         Scene original = SceneLoader.load(Path.of("scenes", name + ".xml"));
-        Scene moved = new Scene();
-        moved.setName(original.getName());
-        moved.setImage(original.getWidth() / shrink, original.getHeight() / shrink);
-        moved.setExposure(original.getExposure());
-        moved.setBackColor(original.getBackColor());
-        moved.setSamples(original.getSamples());
-        moved.setCamera(camera((PerspectiveCamera) original.getCamera(), scale, translate));
+        List<Light> lights = new ArrayList<>();
         for (Light light : original.getLights()) {
-            moved.addLight(new Light(light.getPosition().times(scale).plus(translate), light.getIntensity().times(scale * scale)));
+            lights.add(new Light(light.getPosition().times(scale).plus(translate), light.getIntensity().times(scale * scale)));
         }
         Group placed = new Group();
         for (Surface surface : original.getSurfaces().children()) {
             placed.addSurface(surface);
         }
-        moved.addSurface(Placement.of(translate, Vec3.ZERO, new Vec3(scale, scale, scale)).place(placed));
+        Scene moved = original.withParts(camera((PerspectiveCamera) original.getCamera(), scale, translate), lights,
+                List.of(Placement.of(translate, Vec3.ZERO, new Vec3(scale, scale, scale)).place(placed)));
+        moved.setImage(original.getWidth() / shrink, original.getHeight() / shrink);
         moved.complete();
         return moved;
     }

@@ -1,9 +1,9 @@
 package ray.scene;
 
+import java.util.ArrayList;
+import java.util.List;
 import ray.math.Vec3;
 import ray.shading.Light;
-import ray.shading.Shader;
-import ray.shading.Texture;
 import ray.surface.Group;
 import ray.surface.Surface;
 
@@ -43,27 +43,15 @@ public final class CameraFrame {
      * tests move scenes far from the origin.)
      */
     public static Scene seenFrom(Scene scene, Vec3 eye) {
-        Scene moved = new Scene();
-        moved.setName(scene.getName());
-        moved.setCamera(scene.getCamera().inFrameAt(eye));
-        moved.setImage(scene.getWidth(), scene.getHeight());
-        moved.setExposure(scene.getExposure());
-        moved.setBackColor(scene.getBackColor());
-        moved.setSamples(scene.getSamples());
+        List<Light> lights = new ArrayList<>();
         for (Light light : scene.getLights()) {
-            moved.addLight(new Light(light.getPosition().minus(eye), light.getIntensity()));
+            lights.add(new Light(light.getPosition().minus(eye), light.getIntensity()));
         }
-        for (Shader shader : scene.getShaders()) {
-            moved.addShader(shader);
+        List<Surface> surfaces = new ArrayList<>();
+        for (Surface child : scene.getSurfaces().children()) {
+            surfaces.add(inFrameAt(child, eye));
         }
-        for (Texture texture : scene.getTextures()) {
-            moved.addTexture(texture);
-        }
-        Group root = scene.getSurfaces();
-        moved.getSurfaces().setShader(root.getShader());
-        for (Surface child : root.children()) {
-            moved.addSurface(inFrameAt(child, eye));
-        }
+        Scene moved = scene.withParts(scene.getCamera().inFrameAt(eye), lights, surfaces);
         // A rebuilt box or mesh has new triangles, which take its shader as the loaded ones did.
         moved.complete();
         return moved;

@@ -113,6 +113,27 @@ public class Scene {
     }
 
     /**
+     * A scene with this one's name, image, exposure, background, samples, shaders and textures, and
+     * {@code camera}, {@code lights} and {@code surfaces} (the top level, under a root with this
+     * scene's root shader) for its parts; this scene is left as it was. Not completed.
+     */
+    public Scene withParts(Camera camera, List<Light> lights, List<Surface> surfaces) {
+        Scene copy = new Scene();
+        copy.setName(name);
+        copy.setCamera(camera);
+        copy.setImage(width, height);
+        copy.setExposure(exposure);
+        copy.setBackColor(backColor);
+        copy.setSamples(samples);
+        lights.forEach(copy::addLight);
+        shaders.forEach(copy::addShader);
+        textures.forEach(copy::addTexture);
+        copy.surfaces.setShader(this.surfaces.getShader());
+        surfaces.forEach(copy::addSurface);
+        return copy;
+    }
+
+    /**
      * The scene as the renderer sees it: moved so that the camera sits at the origin (see
      * {@link CameraFrame}), made once and kept until the scene changes; this scene itself when its
      * camera is already at the origin. Call it once every part is in place.
