@@ -206,6 +206,36 @@ public class GraderTest {
         }
     }
 
+    /**
+     * A sphere whose normal is r long and the two texture lookups that miss the texel's center or flip
+     * its rows are named in each of their task's failed render tests, while the other tasks, which
+     * are the solution's and correct, never get a mistake's name.
+     */
+    @Test(timeout = 900_000)
+    @SuppressWarnings("unchecked")
+    public void anUnnormalizedNormalAndTheTextureMistakesAreNamed() throws Exception {
+        for (String[] c : new String[][] {
+                {"sphere-normal-unnormalized", "Task 2 ", "SphereRenderTest.", "gives the normal as hit − center without dividing by the radius"},
+                {"texture-no-half", "Task 5 ", "TextureRenderTest.", "(int)(u·W) without + 0.5"},
+                {"texture-flipped-rows", "Task 5 ", "TextureRenderTest.", "flips the row itself"}}) {
+            List<Map<String, Object>> tests = (List<Map<String, Object>>) grade(solutionWithVariant(c[0]), c[0]).get("tests");
+            List<Map<String, Object>> failed = tests.stream()
+                    .filter(t -> ((String) t.get("name")).contains(c[2]) && "failed".equals(t.get("status")))
+                    .collect(Collectors.toList());
+            assertTrue(c[0] + " fails some of its render tests", !failed.isEmpty());
+            for (Map<String, Object> t : failed) {
+                assertTrue(t.get("name") + ": " + t.get("output"), ((String) t.get("output")).contains(VariantMistakes.MATCHES + c[3]));
+            }
+            for (Map<String, Object> t : tests) {
+                String output = (String) t.get("output");
+                if (!((String) t.get("name")).contains(c[1]) && output != null) {
+                    assertTrue(t.get("name") + " is correct code: " + output,
+                            !output.contains(VariantMistakes.MATCHES) && !output.contains("Your image matches the reference"));
+                }
+            }
+        }
+    }
+
     /** A camera that measures v from the top renders the reference upside down: its render tests say so. */
     @Test(timeout = 600_000)
     @SuppressWarnings("unchecked")

@@ -99,6 +99,7 @@ public class AlternativeSolutionsTest {
     public void knownMistakesLosePointsInTheirOwnTask() throws Exception {
         for (Variant wrong : List.of(Variant.wrong("camera-flipped-v", 1), Variant.wrong("camera-uncentered", 1),
                 Variant.wrong("sphere-far-root", 2), Variant.wrong("sphere-normal-inward", 2),
+                Variant.wrong("sphere-normal-unnormalized", 2),
                 Variant.wrong("sphere-unit-direction-assumed", 2), Variant.wrong("triangle-no-sum-check", 3),
                 Variant.wrong("group-first-hit", 4), Variant.wrong("texture-no-half", 5), Variant.wrong("texture-flipped-rows", 5),
                 Variant.wrong("texture-clamp-to-width", 5))) {
