@@ -16,8 +16,9 @@ import ray.grading.ProjectTree;
 /**
  * What every autograder package holds, whatever platform runs it: {@code ray1/}, the grading tree
  * (the parts of the project the grader copies: its sources, with the solution the other tasks' tests
- * run on, and the scenes with their references), and {@code lib/}, the grader and framework classes
- * as one jar beside every library the grading needs, so that nothing is downloaded at grading time.
+ * run on, and the scenes with their references; git's tracked files only, see {@link TrackedFiles}),
+ * and {@code lib/}, the grader and framework classes as one jar beside every library the grading
+ * needs, so that nothing is downloaded at grading time.
  * The Gradescope zip and the PrairieLearn folder write the same kit through their own {@link Sink}.
  */
 public final class GradingKit {
@@ -37,9 +38,8 @@ public final class GradingKit {
      */
     public static void write(Sink sink, String prefix, Path project, List<Path> classes, List<Path> libraries) throws IOException {
         for (String part : ProjectTree.PARTS) {
-            Path folder = project.resolve(part);
-            if (Files.isDirectory(folder)) {
-                for (Path file : filesUnder(folder)) {
+            if (Files.isDirectory(project.resolve(part))) {
+                for (Path file : TrackedFiles.under(project, part)) {
                     sink.put(prefix + "ray1/" + slashed(project.relativize(file)), Files.readAllBytes(file), false);
                 }
             }

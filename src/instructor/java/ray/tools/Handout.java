@@ -3,11 +3,8 @@ package ray.tools;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.FileVisitResult;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.SimpleFileVisitor;
-import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -29,7 +26,8 @@ import ray.grading.SolutionMarkers;
  * file between a {@code BEGIN INSTRUCTOR} and an {@code END INSTRUCTOR} line (README.md's
  * instructor sections, build.gradle's line that applies the instructor's build). Java sources lose
  * their solution blocks and get their stubs ({@link SolutionMarkers}). What is not the kit at all
- * (version control, CI, build output) is not copied either. The build fails if any marker survives.
+ * (version control, CI, build output, and any file git does not track) is not copied either. The
+ * build fails if any marker survives.
  */
 public final class Handout {
     /** Top-level folders that are not part of the kit: version control, CI, build and render output, editor settings. */
@@ -76,30 +74,22 @@ public final class Handout {
         return written;
     }
 
-    /** Every file of the project that ships, sorted: not in the instructor part, not version control or build output. */
+    /**
+     * Every file of the project that ships, sorted: git's tracked files (every file when the project
+     * is not a checkout), less the instructor part, version control, CI and build output.
+     */
     private static List<Path> kitFiles(Path project) throws IOException {
         List<Path> files = new ArrayList<>();
-        Files.walkFileTree(project, new SimpleFileVisitor<>() {
-            @Override
-            public FileVisitResult preVisitDirectory(Path dir, BasicFileAttributes attributes) {
-                if (dir.equals(project)) {
-                    return FileVisitResult.CONTINUE;
-                }
-                boolean top = dir.getParent().equals(project);
-                String name = dir.getFileName().toString();
-                return top && NOT_THE_KIT.contains(name) || isInstructorPart(name) ? FileVisitResult.SKIP_SUBTREE
-                        : FileVisitResult.CONTINUE;
+        for (Path file : TrackedFiles.under(project, ".")) {
+            Path relative = project.relativize(file);
+            boolean ships = !NOT_THE_KIT.contains(relative.getName(0).toString());
+            for (Path name : relative) {
+                ships &= !isInstructorPart(name.toString());
             }
-
-            @Override
-            public FileVisitResult visitFile(Path file, BasicFileAttributes attributes) {
-                if (attributes.isRegularFile() && !isInstructorPart(file.getFileName().toString())) {
-                    files.add(file);
-                }
-                return FileVisitResult.CONTINUE;
+            if (ships) {
+                files.add(file);
             }
-        });
-        files.sort(null);
+        }
         return files;
     }
 
