@@ -73,18 +73,25 @@ final class ClosestHitReport {
     }
 
     private void consistency(IntersectionRecord hit, List<ProbeNode> roots, ProbeNode nearest) {
+        out.println("  " + check(hit, roots, nearest, names));
+    }
+
+    /**
+     * The group's hit checked against the smallest t of the surfaces alone, in one line: "✓ …",
+     * "(a tie …)", or "! …" when the group did not keep the closest hit.
+     */
+    static String check(IntersectionRecord hit, List<ProbeNode> roots, ProbeNode nearest, SurfaceNames names) {
         if (nearest == null) {
-            out.println("  ! no surface reports a hit when tested alone: the group's loop must return only its children's hits");
-            return;
+            return "! no surface reports a hit when tested alone: the group's loop must return only its children's hits";
         }
         double tolerance = 1e-12 * Math.max(1, Math.abs(nearest.t()));
         if (Math.abs(hit.t - nearest.t()) > tolerance) {
-            out.println("  ! the smallest t in the list above is " + Fmt.num(nearest.t()) + ", at " + ProbeTree.path(roots, nearest, names)
-                    + ": the group must keep the closest hit (shorten the ray to end at each hit's t). See TODO(Task 4)");
-        } else if (hit.surface != nearest.surface) {
-            out.println("  (a tie at t = " + Fmt.num(hit.t) + " with " + ProbeTree.path(roots, nearest, names) + ")");
-        } else {
-            out.println("  ✓ the nearest hit in the list above");
+            return "! the smallest t in the list above is " + Fmt.num(nearest.t()) + ", at " + ProbeTree.path(roots, nearest, names)
+                    + ": the group must keep the closest hit (shorten the ray to end at each hit's t). See TODO(Task 4)";
         }
+        if (hit.surface != nearest.surface) {
+            return "(a tie at t = " + Fmt.num(hit.t) + " with " + ProbeTree.path(roots, nearest, names) + ")";
+        }
+        return "✓ the nearest hit in the list above";
     }
 }

@@ -60,9 +60,9 @@ final class ProbePrinter {
         }
         if (summarized(node)) {
             if (!node.transformed) {
-                rows.add(new String[] {label, summary(node)});
+                rows.add(new String[] {label, summary(node, nearest)});
             } else {
-                rows.add(new String[] {indent + "   its triangles:", summary(node)});
+                rows.add(new String[] {indent + "   its triangles:", summary(node, nearest)});
             }
             triangleDetails(node, indent + "     ");
             return;
@@ -72,7 +72,8 @@ final class ProbePrinter {
         }
     }
 
-    private boolean summarized(ProbeNode node) {
+    /** Whether the node's primitives are summed up in one line (a mesh, a box, a large group of primitives). */
+    boolean summarized(ProbeNode node) {
         if (all || node.children.isEmpty() || !node.children.stream().allMatch(ProbeNode::isPrimitive)) {
             return false;
         }
@@ -89,7 +90,8 @@ final class ProbePrinter {
         return "hit  t = " + Fmt.num(p.t()) + "  at " + Fmt.vec(p.worldLocation()) + (p == nearest ? "  ← nearest" : "");
     }
 
-    private String summary(ProbeNode group) {
+    /** "12 triangles: 2 hit (nearest t = … at triangle #3, at (…)), 10 miss": a group of primitives in one line. */
+    static String summary(ProbeNode group, ProbeNode nearest) {
         int hits = 0;
         int failures = 0;
         ProbeNode best = null;

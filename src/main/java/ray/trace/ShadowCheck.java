@@ -15,15 +15,28 @@ import ray.scene.Scene;
 final class ShadowCheck {
     private static final int MAX_BLOCKERS = 3;
 
-    private ShadowCheck() {
+    /** The renderer's shadow ray (from {@code tracer}). */
+    final Ray ray;
+    /** The shadow ray's probe of every surface, for naming blockers by their place in the scene. */
+    final List<ProbeNode> roots;
+    /** The primitives that report a hit on the shadow ray alone, nearest first. */
+    final List<ProbeNode> blockers;
+    /** Whether the scene's group reports a blocker: what the renderer goes by. */
+    final boolean blockedByGroup;
+    /** What the scene's group threw, in one line, or null. */
+    final String groupFailure;
+
+    private ShadowCheck(Ray ray, List<ProbeNode> roots, List<ProbeNode> blockers, boolean blockedByGroup, String groupFailure) {
+        this.ray = ray;
+        this.roots = roots;
+        this.blockers = blockers;
+        this.blockedByGroup = blockedByGroup;
+        this.groupFailure = groupFailure;
     }
 
-    /** Prints the shadow ray (the renderer's, from {@code tracer}) and what blocks it; returns whether the renderer sees the light as blocked. */
-    static boolean print(Scene scene, SurfaceNames names, TraceTracer tracer, IntersectionRecord hit, Vec3 lightPosition,
-            String indent, PrintWriter out) {
+    /** Traces the shadow ray from {@code hit} toward the light both ways. */
+    static ShadowCheck of(Scene scene, TraceTracer tracer, IntersectionRecord hit, Vec3 lightPosition) {
         Ray shadowRay = tracer.shadowRay(hit, lightPosition);
-        out.println(Fmt.row(indent, "shadow ray", "from " + Fmt.vec(shadowRay.origin) + " (just off the surface) along "
-                + Fmt.vec(shadowRay.direction) + ", t in (0, 1 − 1e-9)"));
         List<ProbeNode> roots = ProbeTree.of(scene.getSurfaces(), shadowRay);
         List<ProbeNode> blockers = new ArrayList<>();
         for (ProbeNode p : ProbeTree.primitives(roots)) {
@@ -33,11 +46,41 @@ final class ShadowCheck {
         }
         // Nearest blocker first: the one a student would see standing between the point and the light.
         blockers.sort((a, b) -> Double.compare(a.t(), b.t()));
-        boolean blockedByGroup;
         try {
-            blockedByGroup = scene.getSurfaces().intersect(new IntersectionRecord(), shadowRay.copy());
+            boolean blocked = scene.getSurfaces().intersect(new IntersectionRecord(), shadowRay.copy());
+            return new ShadowCheck(shadowRay, roots, blockers, blocked, null);
         } catch (RuntimeException | StackOverflowError e) {
-            out.println(Fmt.row(indent, "shadow", "the scene's group threw " + Failure.oneLine(e)));
+            return new ShadowCheck(shadowRay, roots, blockers, false, Failure.oneLine(e));
+        }
+    }
+
+    /** The nearest primitive that blocks the shadow ray alone, or null. */
+    ProbeNode nearestBlocker() {
+        return blockers.isEmpty() ? null : blockers.get(0);
+    }
+
+    /**
+     * What is wrong between the group's answer and the surfaces' own, in one line, or null: the
+     * surfaces see a blocker the group does not (a stub group), or the other way round.
+     */
+    String disagreement() {
+        if (!blockers.isEmpty() && !blockedByGroup) {
+            return "but the scene's group (Group.intersect) finds no blocker, so the renderer lights"
+                    + " this point anyway: is Group.intersect still the stub? See TODO(Task 4)";
+        }
+        if (blockers.isEmpty() && blockedByGroup) {
+            return "but the scene's group (Group.intersect) reports a blocker that no surface"
+                    + " reports on its own: the group's loop must return only its children's hits";
+        }
+        return null;
+    }
+
+    /** Prints the shadow ray and what blocks it; returns whether the renderer sees the light as blocked. */
+    boolean print(SurfaceNames names, String indent, PrintWriter out) {
+        out.println(Fmt.row(indent, "shadow ray", "from " + Fmt.vec(ray.origin) + " (just off the surface) along "
+                + Fmt.vec(ray.direction) + ", t in (0, 1 − 1e-9)"));
+        if (groupFailure != null) {
+            out.println(Fmt.row(indent, "shadow", "the scene's group threw " + groupFailure));
             return false;
         }
         if (blockers.isEmpty()) {
@@ -51,12 +94,9 @@ final class ShadowCheck {
         if (blockers.size() > MAX_BLOCKERS) {
             out.println(Fmt.row(indent, "", "and " + (blockers.size() - MAX_BLOCKERS) + " more primitives"));
         }
-        if (!blockers.isEmpty() && !blockedByGroup) {
-            out.println(Fmt.row(indent, "!", "but the scene's group (Group.intersect) finds no blocker, so the renderer lights"
-                    + " this point anyway: is Group.intersect still the stub? See TODO(Task 4)"));
-        } else if (blockers.isEmpty() && blockedByGroup) {
-            out.println(Fmt.row(indent, "!", "but the scene's group (Group.intersect) reports a blocker that no surface"
-                    + " reports on its own: the group's loop must return only its children's hits"));
+        String disagreement = disagreement();
+        if (disagreement != null) {
+            out.println(Fmt.row(indent, "!", disagreement));
         }
         return blockedByGroup;
     }

@@ -9,9 +9,12 @@ import ray.surface.Sphere;
 import ray.surface.Surface;
 import ray.surface.Triangle;
 
-/** Short names of surfaces, with the numbers that tell them apart (center, vertices, bounds, file). */
-final class SurfaceNames {
-    String of(Surface s) {
+/**
+ * Short names of surfaces, with the numbers that tell them apart (center, vertices, bounds, file),
+ * as the trace and the explore page show them.
+ */
+public final class SurfaceNames {
+    public String of(Surface s) {
         if (s instanceof Sphere) {
             Sphere sphere = (Sphere) s;
             return "Sphere center " + Fmt.vec(sphere.getCenter()) + ", radius " + Fmt.num(sphere.getRadius());
@@ -50,7 +53,7 @@ final class SurfaceNames {
     }
 
     /** The path relative to the working folder when the file is under it (as the student wrote it), else as is. */
-    private static String shortPath(Path file) {
+    public static String shortPath(Path file) {
         Path here = Path.of("").toAbsolutePath();
         Path absolute = file.toAbsolutePath().normalize();
         return (absolute.startsWith(here) ? here.relativize(absolute) : absolute).toString().replace('\\', '/');
