@@ -74,6 +74,37 @@ public abstract class Camera implements Cloneable {
         return viewPoint;
     }
 
+    public Vec3 getViewDir() {
+        return viewDir;
+    }
+
+    public Vec3 getViewUp() {
+        return viewUp;
+    }
+
+    public double getViewWidth() {
+        return viewWidth;
+    }
+
+    public double getViewHeight() {
+        return viewHeight;
+    }
+
+    /** The basis vector toward the image's right, once {@link #complete()} has run (null before). */
+    public Vec3 getU() {
+        return u;
+    }
+
+    /** The basis vector toward the image's top, once {@link #complete()} has run (null before). */
+    public Vec3 getV() {
+        return v;
+    }
+
+    /** The basis vector pointing back from the view (−viewDir, unit), once {@link #complete()} has run (null before). */
+    public Vec3 getW() {
+        return w;
+    }
+
     /**
      * This camera in coordinates whose origin is at {@code origin} (its viewPoint becomes
      * viewPoint − origin; directions and sizes stay): a copy of every field, so that a camera

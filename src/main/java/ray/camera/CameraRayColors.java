@@ -50,7 +50,7 @@ public final class CameraRayColors {
             return UNUSABLE;
         }
         boolean perspective = camera instanceof PerspectiveCamera;
-        double planeDistance = perspective ? projDistanceOf((PerspectiveCamera) camera) : 0;
+        double planeDistance = perspective ? ProjDistance.of((PerspectiveCamera) camera) : 0;
         double t = (planeDistance - ray.origin.minus(camera.viewPoint).dot(forward)) / along;
         Vec3 onPlane = ray.pointAt(t).minus(camera.viewPoint);
         double red = onPlane.dot(camera.u) / camera.viewWidth + 0.5;
@@ -59,22 +59,6 @@ public final class CameraRayColors {
                 ? ray.origin.minus(camera.viewPoint).length() / Math.max(camera.viewWidth, camera.viewHeight)
                 : ray.direction.normalized().minus(forward).length();
         return new Vec3(clamp(red), clamp(green), clamp(blue));
-    }
-
-    /**
-     * The camera's projDistance, read from its field: PerspectiveCamera.java is a student file, and
-     * the grader compiles the framework against each student's copy of it, so the framework may
-     * use nothing in it beyond what every handout has had (the field and its setter). A copy
-     * without the field draws as if the plane were 1 unit away.
-     */
-    private static double projDistanceOf(PerspectiveCamera camera) {
-        try {
-            java.lang.reflect.Field field = PerspectiveCamera.class.getDeclaredField("projDistance");
-            field.setAccessible(true);
-            return field.getDouble(camera);
-        } catch (ReflectiveOperationException | RuntimeException e) {
-            return 1;
-        }
     }
 
     private static double clamp(double x) {
