@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
 /** The {@code ray1} command and its subcommands. */
 @Command(name = "ray1", mixinStandardHelpOptions = true, version = "ray1 1.0",
         description = "The Ray I ray tracer: renders the course's XML scenes to PNG.",
-        subcommands = {RenderCommand.class, DiffCommand.class, TraceCommand.class, AccuracyCommand.class})
+        subcommands = {RenderCommand.class, DiffCommand.class, TraceCommand.class, ExploreCommand.class, AccuracyCommand.class})
 public final class Ray1Command implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
