@@ -602,7 +602,8 @@ function hitLine(h, summary) {
   parts.push(el('span', { class: `tag ${h.hit ? 'tag-hit' : 'tag-miss'}` }, h.hit ? 'hit' : 'miss'));
   if (h.nearest) parts.push(el('span', { class: 'tag tag-nearest' }, 'nearest'));
   if (summary) parts.push(' ', el('span', { class: 'summary-text' }, summary));
-  if (h.hit) {
+  // A group, mesh or box has no t of its own: its summary names its nearest hit.
+  if (h.hit && !summary) {
     parts.push(' ', el('span', { class: 'num' },
       `t = ${fmtText(h.tText, h.t)}`,
       Array.isArray(h.location) ? ` at ${fmtVec(h.location)}` : '',
