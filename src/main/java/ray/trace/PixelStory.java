@@ -46,12 +46,11 @@ public final class PixelStory {
      * pixel alone; {@code reference} is the reference image's pixel there, or null.
      */
     public JsonObject of(int x, int y, int[] value, int[] reference) {
-        int w = scene.getWidth();
-        int h = scene.getHeight();
-        int i = x;
-        int j = h - 1 - y;
-        double u = (i + 0.5) / w;
-        double v = (j + 0.5) / h;
+        PixelCoordinates pixel = new PixelCoordinates(scene, x, y);
+        int i = pixel.i;
+        int j = pixel.j;
+        double u = pixel.u;
+        double v = pixel.v;
         JsonObject story = new JsonObject();
         story.addProperty("x", x);
         story.addProperty("y", y);

@@ -50,10 +50,11 @@ public final class PixelTrace {
     public int[] run(int x, int y, PrintWriter out) {
         int w = scene.getWidth();
         int h = scene.getHeight();
-        int i = x;
-        int j = h - 1 - y;
-        double u = (i + 0.5) / w;
-        double v = (j + 0.5) / h;
+        PixelCoordinates pixel = new PixelCoordinates(scene, x, y);
+        int i = pixel.i;
+        int j = pixel.j;
+        double u = pixel.u;
+        double v = pixel.v;
         out.println("Pixel x = " + x + ", y = " + y + " of " + sceneLabel + " (" + w + "×" + h + " pixels)");
         out.println("  x counts from the left and y from the top, as an image viewer shows the PNG.");
         out.println(Fmt.row("  ", "(i, j)", "(" + i + ", " + j + ")   the renderer's pixel: i = x, j = " + (h - 1) + " − y counts from the bottom"));
