@@ -175,7 +175,8 @@ final class ExploreSession {
     JsonObject trace(int x, int y) {
         int[] value = render == null ? null : rgb(render, x, y);
         int[] ref = reference != null && x < reference.getWidth() && y < reference.getHeight() ? rgb(reference, x, y) : null;
-        return new PixelStory(scene, sceneFile.toString().replace('\\', '/')).of(x, y, value, ref);
+        // Labelled as ray1 trace labels it, so the story's text is that command's output.
+        return new PixelStory(scene, sceneFile.toString()).of(x, y, value, ref);
     }
 
     /** Why (x, y) is no pixel of the image, or null. */

@@ -38,15 +38,12 @@ final class ClosestHitReport {
         if (!found) {
             out.println("  none: the pixel shows the background color " + Fmt.vec(scene.getBackColor()));
             if (nearest != null) {
-                out.println("  ! but " + ProbeTree.path(roots, nearest, names) + " is hit at t = " + Fmt.num(nearest.t())
-                        + " when tested alone: is Group.intersect still the stub? See TODO(Task 4)");
+                out.println("  ! but " + hitAlone(roots, nearest, names));
             }
             out.println();
             return scene.getBackColor();
         }
-        List<ProbeNode> primitives = ProbeTree.primitives(roots);
-        ProbeNode winner = ProbeTree.bySurface(primitives, hit.surface);
-        out.println(Fmt.row("  ", "surface", winner != null ? ProbeTree.path(roots, winner, names) : String.valueOf(hit.surface)));
+        out.println(Fmt.row("  ", "surface", surfacePath(hit, roots, names)));
         out.println(Fmt.row("  ", "t", Fmt.num(hit.t)));
         out.println(Fmt.row("  ", "location", Fmt.vec(hit.location)));
         out.println(Fmt.row("  ", "normal", Fmt.vec(hit.normal)));
@@ -54,9 +51,9 @@ final class ClosestHitReport {
                 : ShadingReport.describe(hit.surface.getShader())));
         consistency(hit, roots, nearest);
         out.println();
-        if (hit.surface == null || hit.surface.getShader() == null || hit.normal == null || hit.location == null) {
-            out.println("The hit cannot be shaded: its record lacks " + (hit.surface == null ? "the surface"
-                    : hit.surface.getShader() == null ? "a shader" : hit.normal == null ? "the normal" : "the location"));
+        String lacks = lacks(hit);
+        if (lacks != null) {
+            out.println("The hit cannot be shaded: its record lacks " + lacks);
             out.println();
             return null;
         }
@@ -70,6 +67,24 @@ final class ClosestHitReport {
             out.println();
             return null;
         }
+    }
+
+    /** Where the group's hit is in the scene ("#1 Box (…) › triangle #8 (+y face)"), or its surface as the record names it. */
+    static String surfacePath(IntersectionRecord hit, List<ProbeNode> roots, SurfaceNames names) {
+        ProbeNode winner = ProbeTree.bySurface(ProbeTree.primitives(roots), hit.surface);
+        return winner != null ? ProbeTree.path(roots, winner, names) : String.valueOf(hit.surface);
+    }
+
+    /** What the group missed: "#1 Sphere … is hit at t = 4 when tested alone: is Group.intersect still the stub? …". */
+    static String hitAlone(List<ProbeNode> roots, ProbeNode nearest, SurfaceNames names) {
+        return ProbeTree.path(roots, nearest, names) + " is hit at t = " + Fmt.num(nearest.t())
+                + " when tested alone: is Group.intersect still the stub? See TODO(Task 4)";
+    }
+
+    /** What a hit's record lacks for shading ("the surface", "a shader", "the normal", "the location"), or null when it can be shaded. */
+    static String lacks(IntersectionRecord hit) {
+        return hit.surface == null ? "the surface" : hit.surface.getShader() == null ? "a shader"
+                : hit.normal == null ? "the normal" : hit.location == null ? "the location" : null;
     }
 
     private void consistency(IntersectionRecord hit, List<ProbeNode> roots, ProbeNode nearest) {

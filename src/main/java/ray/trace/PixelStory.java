@@ -14,7 +14,6 @@ import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
-import ray.math.Vec3;
 import ray.scene.Scene;
 import ray.shading.DirectLighting;
 import ray.shading.Light;
@@ -72,7 +71,7 @@ public final class PixelStory {
             ProbeNode nearest = ProbeTree.nearest(ProbeTree.primitives(roots));
             JsonArray hits = new JsonArray();
             for (ProbeNode node : roots) {
-                hits.add(node(node, "#" + (node.index + 1) + " " + names.of(node.surface), nearest));
+                hits.add(node(node, ProbeTree.step(null, node, names), nearest));
             }
             story.add("hits", hits);
             closest(story, ray, roots, nearest);
@@ -149,11 +148,8 @@ public final class PixelStory {
             return n;
         }
         JsonArray children = new JsonArray();
-        boolean ofShape = node.surface instanceof ray.surface.Mesh || node.surface instanceof ray.surface.Box;
         for (ProbeNode child : node.children) {
-            String childPath = path + " › " + (ofShape ? SurfaceNames.triangle(node.surface, child.surface, child.index)
-                    : "#" + (child.index + 1) + " " + names.of(child.surface));
-            children.add(node(child, childPath, nearest));
+            children.add(node(child, path + " › " + ProbeTree.step(node.surface, child, names), nearest));
         }
         n.add("children", children);
         n.addProperty("hit", node.primitives().stream().anyMatch(ProbeNode::isHit));
@@ -190,14 +186,13 @@ public final class PixelStory {
         if (!found) {
             story.add("background", vec(scene.getBackColor()));
             if (nearest != null) {
-                story.addProperty("closestError", "the scene's group reports no hit, but " + ProbeTree.path(roots, nearest, names)
-                        + " is hit at t = " + Fmt.num(nearest.t()) + " when tested alone: is Group.intersect still the stub? See TODO(Task 4)");
+                story.addProperty("closestError", "the scene's group reports no hit, but "
+                        + ClosestHitReport.hitAlone(roots, nearest, names));
             }
             return;
         }
-        ProbeNode winner = ProbeTree.bySurface(ProbeTree.primitives(roots), hit.surface);
         JsonObject c = new JsonObject();
-        c.addProperty("path", winner != null ? ProbeTree.path(roots, winner, names) : String.valueOf(hit.surface));
+        c.addProperty("path", ClosestHitReport.surfacePath(hit, roots, names));
         c.add("t", num(hit.t));
         c.add("location", vec(hit.location));
         c.add("normal", vec(hit.normal));
@@ -205,9 +200,9 @@ public final class PixelStory {
         c.addProperty("shader", hit.surface == null ? "none (the record names no surface)" : ShadingReport.describe(shader));
         c.addProperty("check", ClosestHitReport.check(hit, roots, nearest, names));
         story.add("closest", c);
-        if (shader == null || hit.normal == null || hit.location == null) {
-            story.addProperty("closestError", "the hit cannot be shaded: its record lacks " + (hit.surface == null ? "the surface"
-                    : shader == null ? "a shader" : hit.normal == null ? "the normal" : "the location"));
+        String lacks = ClosestHitReport.lacks(hit);
+        if (lacks != null) {
+            story.addProperty("closestError", "the hit cannot be shaded: its record lacks " + lacks);
             return;
         }
         try {
@@ -256,11 +251,11 @@ public final class PixelStory {
                 blocker.add("location", vec(b.worldLocation()));
                 l.add("blocker", blocker);
             }
-            String problem = f.shadow.groupFailure != null ? "the scene's group threw " + f.shadow.groupFailure : f.shadow.disagreement();
+            String problem = f.shadow.problem();
             l.add("shadowError", problem == null ? JsonNull.INSTANCE : new JsonPrimitive(problem));
         }
-        l.add("diffuse", f.diffuse == null ? JsonNull.INSTANCE : vec(f.diffuse));
-        l.add("specular", f.specular == null ? JsonNull.INSTANCE : vec(f.specular));
+        l.add("diffuse", vec(f.diffuse));
+        l.add("specular", vec(f.specular));
         l.add("adds", vec(f.adds));
         return l;
     }

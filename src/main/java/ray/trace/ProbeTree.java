@@ -50,13 +50,18 @@ final class ProbeTree {
         }
         StringBuilder s = new StringBuilder();
         for (int k = 0; k < chain.size(); k++) {
-            ProbeNode node = chain.get(k);
-            Surface parent = k > 0 ? chain.get(k - 1).surface : null;
-            boolean inShape = parent instanceof Mesh || parent instanceof Box;
-            s.append(k == 0 ? "" : " › ").append(inShape ? SurfaceNames.triangle(parent, node.surface, node.index)
-                    : "#" + (node.index + 1) + " " + names.of(node.surface));
+            s.append(k == 0 ? "" : " › ").append(step(k > 0 ? chain.get(k - 1).surface : null, chain.get(k), names));
         }
         return s.toString();
+    }
+
+    /**
+     * One step of a path: "triangle #7 (+y face)" inside a mesh or box, "#3 Sphere …" anywhere else
+     * ({@code parent} is null at the top of the scene).
+     */
+    static String step(Surface parent, ProbeNode node, SurfaceNames names) {
+        boolean inShape = parent instanceof Mesh || parent instanceof Box;
+        return inShape ? SurfaceNames.triangle(parent, node.surface, node.index) : "#" + (node.index + 1) + " " + names.of(node.surface);
     }
 
     private static boolean find(List<ProbeNode> nodes, ProbeNode target, List<ProbeNode> chain) {

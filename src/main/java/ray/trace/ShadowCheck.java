@@ -75,12 +75,17 @@ final class ShadowCheck {
         return null;
     }
 
+    /** What went wrong with the shadow ray, in one line, or null: the group threw, or it disagrees with the surfaces ({@link #disagreement}). */
+    String problem() {
+        return groupFailure != null ? "the scene's group threw " + groupFailure : disagreement();
+    }
+
     /** Prints the shadow ray and what blocks it; returns whether the renderer sees the light as blocked. */
     boolean print(SurfaceNames names, String indent, PrintWriter out) {
         out.println(Fmt.row(indent, "shadow ray", "from " + Fmt.vec(ray.origin) + " (just off the surface) along "
                 + Fmt.vec(ray.direction) + ", t in (0, 1 − 1e-9)"));
         if (groupFailure != null) {
-            out.println(Fmt.row(indent, "shadow", "the scene's group threw " + groupFailure));
+            out.println(Fmt.row(indent, "shadow", problem()));
             return false;
         }
         if (blockers.isEmpty()) {
