@@ -14,6 +14,8 @@ import java.util.stream.Stream;
 import ray.grading.ClassSubmission;
 import ray.grading.SolutionMarkers;
 import ray.grading.StudentFiles;
+import ray.grading.VariantFolders;
+import ray.grading.VariantFolders.Variant;
 
 /**
  * A made-up class for trying {@code gradeAll} before the real one hands in ({@code gradle sampleClass
@@ -25,8 +27,6 @@ import ray.grading.StudentFiles;
  * the class exercises every way of being right and wrong that the grader knows.
  */
 public final class SampleClass {
-    private static final String VARIANTS = "src/instructorTest/variants";
-
     private SampleClass() {
     }
 
@@ -68,9 +68,11 @@ public final class SampleClass {
      */
     public static Map<Integer, Integer> write(Path project, Path out, int count, long seed) throws IOException {
         Map<String, Integer> studentFiles = StudentFiles.in(project);
-        Map<Integer, List<Path>> correct = new TreeMap<>();
-        Map<Integer, List<Path>> wrong = new TreeMap<>();
-        readVariants(project, studentFiles, correct, wrong);
+        Map<Integer, List<Variant>> correct = new TreeMap<>();
+        Map<Integer, List<Variant>> wrong = new TreeMap<>();
+        for (Variant variant : VariantFolders.in(project, studentFiles)) {
+            (variant.knownWrong != null ? wrong : correct).computeIfAbsent(variant.task, t -> new ArrayList<>()).add(variant);
+        }
         Random random = new Random(seed);
         Map<Integer, Integer> drawn = new TreeMap<>(Map.of(0, 0, 1, 0, 2, 0, 3, 0));
         StringBuilder metadata = new StringBuilder();
@@ -86,7 +88,7 @@ public final class SampleClass {
             for (int task : studentFiles.values().stream().distinct().sorted().collect(Collectors.toList())) {
                 double draw = random.nextDouble();
                 int kind = draw < 0.60 ? 0 : draw < 0.75 ? 1 : draw < 0.90 ? 2 : 3;
-                List<Path> choices = kind == 1 ? correct.get(task) : kind == 2 ? wrong.get(task) : null;
+                List<Variant> choices = kind == 1 ? correct.get(task) : kind == 2 ? wrong.get(task) : null;
                 if ((kind == 1 || kind == 2) && (choices == null || choices.isEmpty())) {
                     kind = 0;
                 }
@@ -98,9 +100,9 @@ public final class SampleClass {
                         }
                     }
                 } else if (choices != null && kind != 0) {
-                    Path variant = choices.get(random.nextInt(choices.size()));
-                    for (Path source : javaFiles(variant)) {
-                        files.put("src/main/java/" + slashed(variant.relativize(source)), Files.readString(source, StandardCharsets.UTF_8));
+                    Variant variant = choices.get(random.nextInt(choices.size()));
+                    for (Path source : variant.sources) {
+                        files.put(variant.studentFile(source), Files.readString(source, StandardCharsets.UTF_8));
                     }
                 }
             }
@@ -117,36 +119,6 @@ public final class SampleClass {
         return drawn;
     }
 
-    /** Each variant folder by the task of its files, sorted into correct ones and known mistakes ("Known wrong:"). */
-    private static void readVariants(Path project, Map<String, Integer> studentFiles, Map<Integer, List<Path>> correct,
-            Map<Integer, List<Path>> wrong) throws IOException {
-        Path root = project.resolve(VARIANTS);
-        if (!Files.isDirectory(root)) {
-            return;
-        }
-        List<Path> folders;
-        try (Stream<Path> list = Files.list(root)) {
-            folders = list.filter(Files::isDirectory).sorted().collect(Collectors.toList());
-        }
-        for (Path folder : folders) {
-            Integer task = null;
-            boolean knownWrong = false;
-            for (Path source : javaFiles(folder)) {
-                task = studentFiles.get("src/main/java/" + slashed(folder.relativize(source)));
-                knownWrong |= Files.readString(source, StandardCharsets.UTF_8).contains("Known wrong:");
-            }
-            if (task != null) {
-                (knownWrong ? wrong : correct).computeIfAbsent(task, t -> new ArrayList<>()).add(folder);
-            }
-        }
-    }
-
-    private static List<Path> javaFiles(Path folder) throws IOException {
-        try (Stream<Path> walk = Files.walk(folder)) {
-            return walk.filter(p -> p.toString().endsWith(".java")).sorted().collect(Collectors.toList());
-        }
-    }
-
     private static boolean isEmptyFolder(Path folder) throws IOException {
         if (!Files.isDirectory(folder)) {
             return false;
@@ -154,9 +126,5 @@ public final class SampleClass {
         try (Stream<Path> list = Files.list(folder)) {
             return list.findAny().isEmpty();
         }
-    }
-
-    private static String slashed(Path relative) {
-        return relative.toString().replace('\\', '/');
     }
 }
