@@ -60,6 +60,41 @@ public class HandoutTest {
         }
     }
 
+    /**
+     * A student with only a JDK runs ./gradlew (gradlew on Windows): the wrapper ships in the folder
+     * and in the zip, gradlew executable in both (the zip records its Unix mode), pinned to a Gradle 9
+     * release with the distribution's SHA-256, and the scripts' line endings are kept by .gitattributes.
+     */
+    @Test
+    public void theWrapperShipsExecutableAndPinnedToAGradle9ReleaseWithItsChecksum() throws Exception {
+        for (String required : List.of("gradlew", "gradlew.bat", "gradle/wrapper/gradle-wrapper.jar",
+                "gradle/wrapper/gradle-wrapper.properties", ".gitattributes")) {
+            assertTrue("the handout lacks " + required, files.contains(required));
+        }
+        assertTrue("gradlew is not executable in the handout folder", Files.isExecutable(handout.resolve("gradlew")));
+        java.util.Properties wrapper = new java.util.Properties();
+        try (var in = Files.newInputStream(handout.resolve("gradle/wrapper/gradle-wrapper.properties"))) {
+            wrapper.load(in);
+        }
+        assertTrue(wrapper.getProperty("distributionUrl"),
+                wrapper.getProperty("distributionUrl").matches("https://services\\.gradle\\.org/distributions/gradle-9\\.\\d+(\\.\\d+)?-bin\\.zip"));
+        assertTrue(wrapper.getProperty("distributionSha256Sum"), String.valueOf(wrapper.getProperty("distributionSha256Sum")).matches("[0-9a-f]{64}"));
+        String attributes = Files.readString(handout.resolve(".gitattributes"), StandardCharsets.UTF_8);
+        assertTrue(attributes, attributes.contains("gradlew text eol=lf") && attributes.contains("*.bat text eol=crlf"));
+        assertTrue("gradlew.bat lost its CRLF line endings", Files.readString(handout.resolve("gradlew.bat"), StandardCharsets.UTF_8).contains("\r\n"));
+
+        Path zip = FOLDER.getRoot().toPath().resolve("ray1-handout.zip");
+        Handout.zip(handout, zip);
+        Map<String, Integer> modes = new java.util.HashMap<>();
+        try (org.apache.commons.compress.archivers.zip.ZipFile archive = org.apache.commons.compress.archivers.zip.ZipFile.builder()
+                .setPath(zip).get()) {
+            archive.getEntries().asIterator().forEachRemaining(e -> modes.put(e.getName(), e.getUnixMode()));
+        }
+        assertEquals("gradlew's mode in the zip", Integer.valueOf(0755), modes.get("ray1/gradlew"));
+        assertEquals("a scene's mode in the zip", Integer.valueOf(0644), modes.get("ray1/scenes/one-sphere.xml"));
+        assertTrue(modes.containsKey("ray1/gradle/wrapper/gradle-wrapper.jar") && modes.containsKey("ray1/gradlew.bat"));
+    }
+
     @Test
     public void theBuildAndReadmeLoseTheirInstructorSections() throws Exception {
         String build = Files.readString(handout.resolve("build.gradle"), StandardCharsets.UTF_8);
@@ -67,7 +102,7 @@ public class HandoutTest {
         assertTrue("the handout's build.gradle lost its test set-up", build.contains("reportTestsByTask(it, 'Tests'"));
         String report = Files.readString(handout.resolve("gradle/test-report.gradle"), StandardCharsets.UTF_8);
         assertTrue("the handout's test report lost its closing line",
-                report.contains("${closingWord}: ${result.successfulTestCount} passed, ${result.failedTestCount} failed"));
+                report.contains("${closingWord}: ${passed} passed, ${failed} failed, ${skipped} skipped"));
         String readme = Files.readString(handout.resolve("README.md"), StandardCharsets.UTF_8);
         assertFalse("the handout's README still has the instructor's commands", readme.contains("gradle handout"));
         assertTrue("the handout's README lost the student's commands", readme.contains("gradle test"));
