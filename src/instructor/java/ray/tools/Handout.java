@@ -5,6 +5,7 @@ import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -12,8 +13,8 @@ import java.util.Set;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
-import java.util.zip.ZipEntry;
-import java.util.zip.ZipOutputStream;
+import org.apache.commons.compress.archivers.zip.ZipArchiveEntry;
+import org.apache.commons.compress.archivers.zip.ZipArchiveOutputStream;
 import ray.grading.SolutionMarkers;
 
 /**
@@ -66,7 +67,8 @@ public final class Handout {
                 String text = Files.readString(file, StandardCharsets.UTF_8);
                 Files.writeString(destination, withoutInstructorSections(text, relative), StandardCharsets.UTF_8);
             } else {
-                Files.copy(file, destination);
+                // gradlew must stay executable (students run ./gradlew), so the copy keeps the mode.
+                Files.copy(file, destination, StandardCopyOption.COPY_ATTRIBUTES);
             }
             written.add(relative);
         }
@@ -138,7 +140,12 @@ public final class Handout {
         }
     }
 
-    /** Zips {@code folder} so that the archive holds one top folder of the same name (ray1/...). */
+    /**
+     * Zips {@code folder} so that the archive holds one top folder of the same name (ray1/...), each
+     * file with its Unix mode (0755 for an executable such as gradlew, else 0644), which
+     * java.util.zip cannot record: unzip and macOS's Archive Utility restore it, so {@code ./gradlew}
+     * runs straight from the unpacked zip.
+     */
     static void zip(Path folder, Path zip) throws IOException {
         Files.createDirectories(zip.toAbsolutePath().getParent());
         Path top = folder.getParent();
@@ -147,11 +154,13 @@ public final class Handout {
             files = walk.filter(Files::isRegularFile).sorted().collect(Collectors.toList());
         }
         Path temporary = Files.createTempFile(zip.toAbsolutePath().getParent(), ".handout", ".tmp");
-        try (OutputStream out = Files.newOutputStream(temporary); ZipOutputStream entries = new ZipOutputStream(out)) {
+        try (OutputStream out = Files.newOutputStream(temporary); ZipArchiveOutputStream entries = new ZipArchiveOutputStream(out)) {
             for (Path file : files) {
-                entries.putNextEntry(new ZipEntry(top.relativize(file).toString().replace('\\', '/')));
+                ZipArchiveEntry entry = new ZipArchiveEntry(top.relativize(file).toString().replace('\\', '/'));
+                entry.setUnixMode(Files.isExecutable(file) ? 0755 : 0644);
+                entries.putArchiveEntry(entry);
                 Files.copy(file, entries);
-                entries.closeEntry();
+                entries.closeArchiveEntry();
             }
         }
         Files.move(temporary, zip, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
