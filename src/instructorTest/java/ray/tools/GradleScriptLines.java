@@ -62,8 +62,6 @@ final class GradleScriptLines {
             boolean guarded = guards.contains(Boolean.TRUE);
             boolean inAction = labels.stream().anyMatch(l -> ACTION.matcher(l).find());
             boolean topLevel = labels.stream().allMatch(l -> PLAIN_BLOCK.matcher(l).matches());
-            // A line's own opening brace decides where the rest of it stands only for the lines after it.
-            lines.add(new Line(n + 1, texts[n], code, guarded, inAction, topLevel));
             Matcher apply = APPLY_FROM.matcher(texts[n]);
             if (apply.find() && code.contains("apply")) {
                 (guarded ? script.appliedGuarded : script.appliedUnguarded).add(apply.group(1));
@@ -76,11 +74,15 @@ final class GradleScriptLines {
                     String label = labelBefore(texts[n], i);
                     labels.push(label);
                     guards.push(isGuard(label));
+                    // A block opened and used on one line ("t.doFirst { ... }") counts for that line.
+                    guarded |= isGuard(label);
+                    inAction |= ACTION.matcher(label).find();
                 } else if (c == '}' && !labels.isEmpty()) {
                     labels.pop();
                     guards.pop();
                 }
             }
+            lines.add(new Line(n + 1, texts[n], code, guarded, inAction, topLevel));
         }
         return script;
     }
