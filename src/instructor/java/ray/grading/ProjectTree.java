@@ -14,8 +14,12 @@ import java.util.stream.Stream;
 
 /** Copies of a project tree to grade in: the sources and scenes, with some student files laid over them. */
 public final class ProjectTree {
-    /** What a test run needs from the project; build output, VCS data and docs are not copied. */
-    public static final List<String> PARTS = List.of("src", "scenes");
+    /**
+     * What a test run needs from the project; build output, VCS data and docs are not copied.
+     * settings.gradle is there because the tests know the project folder by it, beside scenes/
+     * (ray.testing.ProjectFolder): without it no render test could find its scenes.
+     */
+    public static final List<String> PARTS = List.of("src", "scenes", "settings.gradle");
 
     private ProjectTree() {
     }
@@ -28,6 +32,8 @@ public final class ProjectTree {
             Path from = project.resolve(part);
             if (Files.isDirectory(from)) {
                 copyRecursively(from, target.resolve(part));
+            } else if (Files.isRegularFile(from)) {
+                Files.copy(from, target.resolve(part), StandardCopyOption.REPLACE_EXISTING);
             }
         }
         for (Map.Entry<String, Path> file : overlay.entrySet()) {

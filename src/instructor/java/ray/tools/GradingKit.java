@@ -38,7 +38,8 @@ public final class GradingKit {
      */
     public static void write(Sink sink, String prefix, Path project, List<Path> classes, List<Path> libraries) throws IOException {
         for (String part : ProjectTree.PARTS) {
-            if (Files.isDirectory(project.resolve(part))) {
+            // A folder (src, scenes) or a single file (settings.gradle).
+            if (Files.exists(project.resolve(part))) {
                 for (Path file : TrackedFiles.under(project, part)) {
                     sink.put(prefix + "ray1/" + slashed(project.relativize(file)), Files.readAllBytes(file), false);
                 }

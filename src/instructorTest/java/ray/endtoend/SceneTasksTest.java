@@ -25,7 +25,7 @@ public class SceneTasksTest {
     public void everySceneUnderScenesHasATask() {
         List<String> unassigned = new ArrayList<>();
         List<Path> scenes = RenderScenes.sceneFiles();
-        assertTrue("no scenes found under " + RenderScenes.FOLDER.toAbsolutePath(), !scenes.isEmpty());
+        assertTrue("no scenes found under " + RenderScenes.folder(), !scenes.isEmpty());
         for (Path file : scenes) {
             if (!RenderScenes.TASKS.containsKey(SceneFiles.nameOf(file))) {
                 unassigned.add(file.toString());
@@ -40,7 +40,7 @@ public class SceneTasksTest {
         List<String> problems = new ArrayList<>();
         for (String name : RenderScenes.TASKS.keySet()) {
             if (!Files.isRegularFile(RenderScenes.fileOf(name))) {
-                problems.add("no scene file " + name + ".xml under " + RenderScenes.FOLDER);
+                problems.add("no scene file " + name + ".xml under " + RenderScenes.folder());
             } else if (!Files.isRegularFile(RenderScenes.referenceOf(name))) {
                 problems.add("no reference " + RenderScenes.referenceOf(name) + " (run gradle references)");
             }

@@ -18,6 +18,7 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import ray.image.ImageDiff;
 import ray.image.PngWriter;
+import ray.testing.ProjectFolder;
 import ray.testing.StudentTask;
 
 /**
@@ -32,8 +33,21 @@ import ray.testing.StudentTask;
  * classes contribute to one page and a fixed scene drops out of it on the next run.
  */
 final class RenderDiffReport {
-    /** The report the render tests write. */
-    static final RenderDiffReport BUILD = new RenderDiffReport(Path.of("build", "reports", "render-diff"));
+    /** The report the render tests write, once made: see {@link #build()}. */
+    private static RenderDiffReport build;
+
+    /**
+     * The report the render tests write, in the project's build folder wherever the tests run from
+     * ({@link ProjectFolder}), so an IDE's run adds to the page Gradle's run writes.
+     */
+    static synchronized RenderDiffReport build() {
+        // One instance, made on first use: its methods synchronize on it, for tests in several threads.
+        if (build == null) {
+            build = new RenderDiffReport(ProjectFolder.resolve("build", "reports", "render-diff"));
+        }
+        return build;
+    }
+
     /** Per test class, each scene it rendered in its last run and whether it matched: scene=true|false. */
     private static final String RUN_FILE = "run.txt";
 
@@ -49,17 +63,17 @@ final class RenderDiffReport {
 
     /** Forgets the entries {@code testClass} made in earlier runs, and rebuilds the page without them. */
     static void clear(Class<?> testClass) {
-        BUILD.clearEntries(testClass);
+        build().clearEntries(testClass);
     }
 
     /** Records that {@code testClass} rendered {@code scene}, matched or not, for the page's count. */
     static void ran(Class<?> testClass, String scene, boolean passed) {
-        BUILD.record(testClass, scene, passed);
+        build().record(testClass, scene, passed);
     }
 
     static String add(Class<?> testClass, String scene, Path sceneFile, StudentTask task, ImageDiff.Result result,
             BufferedImage yours, BufferedImage reference) {
-        return BUILD.addEntry(testClass, scene, sceneFile, task, result, yours, reference);
+        return build().addEntry(testClass, scene, sceneFile, task, result, yours, reference);
     }
 
     synchronized void clearEntries(Class<?> testClass) {
@@ -103,8 +117,9 @@ final class RenderDiffReport {
             }
             Properties entry = new Properties();
             entry.setProperty("scene", scene);
-            // The path as the student types it (scenes/hard/x.xml, not scenes/x.xml), with / on every system.
-            entry.setProperty("file", sceneFile.toString().replace('\\', '/'));
+            // The path as the student types it in the project folder (scenes/hard/x.xml, not scenes/x.xml
+            // nor the absolute path the test read), with / on every system.
+            entry.setProperty("file", RenderScenes.shown(sceneFile).toString().replace('\\', '/'));
             entry.setProperty("task", task.label());
             entry.setProperty("files", String.join(" and ", task.files));
             entry.setProperty("testClass", testClass.getName());

@@ -6,11 +6,11 @@ import static org.junit.Assert.assertTrue;
 import java.awt.image.BufferedImage;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.Path;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import ray.image.ImageDiff;
+import ray.testing.ProjectFolder;
 import ray.testing.StudentTask;
 
 /** The render-diff page: the commands it gives work as typed, and it tells "none ran" from "all matched". */
@@ -52,7 +52,8 @@ public class RenderDiffReportTest {
         }
         report.record(SphereRenderTest.class, "one-sphere", true);
         report.record(SphereRenderTest.class, "far-tiny-sphere", false);
-        String location = report.addEntry(SphereRenderTest.class, "far-tiny-sphere", Path.of("scenes", "hard", "far-tiny-sphere.xml"),
+        // The test reads the scene by its absolute path; the page names it as typed in the project folder.
+        String location = report.addEntry(SphereRenderTest.class, "far-tiny-sphere", ProjectFolder.resolve("scenes", "hard", "far-tiny-sphere.xml"),
                 StudentTask.SPHERE, ImageDiff.compare(white, black), black, white);
         assertTrue(location, location.endsWith("index.html"));
         String html = page(report);

@@ -11,6 +11,7 @@ import ray.image.PngWriter;
 import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneFiles;
+import ray.testing.ProjectFolder;
 import ray.testing.StudentTask;
 
 /**
@@ -18,9 +19,19 @@ import ray.testing.StudentTask;
  * graded render test counts toward, and full-size renders of them.
  */
 final class RenderScenes {
-    static final Path FOLDER = Path.of("scenes");
+    /**
+     * The project's scenes/ folder, absolute, wherever the tests run from ({@link ProjectFolder}). A
+     * method, not a constant: a project folder that cannot be found then fails the test that asks,
+     * with its one-line reason, rather than this class's initialization.
+     */
+    static Path folder() {
+        return ProjectFolder.resolve("scenes");
+    }
+
     /** The reference renders, made by the instructor's solution ({@code gradle references}). */
-    static final Path REFERENCE = FOLDER.resolve("reference");
+    static Path referenceFolder() {
+        return folder().resolve("reference");
+    }
 
     /**
      * The task whose code each scene exercises most. Every scene under scenes/ must be listed here
@@ -67,7 +78,7 @@ final class RenderScenes {
 
     /** Every scene file under scenes/, sorted, except any under scenes/reference. */
     static List<Path> sceneFiles() {
-        return SceneFiles.under(FOLDER, REFERENCE);
+        return SceneFiles.under(folder(), referenceFolder());
     }
 
     /** The scene file called {@code name}.xml anywhere under scenes/, or scenes/NAME.xml when there is none (to be reported missing). */
@@ -77,11 +88,21 @@ final class RenderScenes {
                 return p;
             }
         }
-        return FOLDER.resolve(name + ".xml");
+        return folder().resolve(name + ".xml");
     }
 
     static Path referenceOf(String name) {
-        return REFERENCE.resolve(name + ".png");
+        return referenceFolder().resolve(name + ".png");
+    }
+
+    /**
+     * A file as messages name it: relative to the project folder (scenes/hard/x.xml), as the student
+     * types it and as the grader reads it back from a failure message, whatever the working folder;
+     * a path outside the project (or already relative) as it is.
+     */
+    static Path shown(Path file) {
+        Path project = ProjectFolder.get();
+        return file.isAbsolute() && file.normalize().startsWith(project) ? project.relativize(file.normalize()) : file;
     }
 
     /** The parameters of a task's render test: the names of its scenes, as one-element arrays. */

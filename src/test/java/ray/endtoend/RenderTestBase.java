@@ -48,17 +48,21 @@ public abstract class RenderTestBase {
     public void rendersLikeTheReference() throws Exception {
         Path file = RenderScenes.fileOf(scene);
         Path referenceFile = RenderScenes.referenceOf(scene);
+        // Read by their absolute paths, named in messages relative to the project (scenes/x.xml).
+        Path shown = RenderScenes.shown(file);
+        Path referenceShown = RenderScenes.shown(referenceFile);
         if (!Files.exists(file)) {
-            throw new NotThisTasksFault("the scene " + file + " is missing; restore it from the handout");
+            throw new NotThisTasksFault("the scene " + shown + " is missing; restore it from the handout");
         }
         if (!Files.exists(referenceFile)) {
-            throw new NotThisTasksFault("no reference image " + referenceFile + " for " + file + "; restore it from the handout");
+            throw new NotThisTasksFault("no reference image " + referenceShown + " for " + shown + "; restore it from the handout");
         }
         Scene loaded;
         try {
             loaded = SceneLoader.load(file);
         } catch (SceneException e) {
-            throw new NotThisTasksFault("the scene does not load: " + e.getMessage()
+            throw new NotThisTasksFault("the scene does not load: " + RenderScenes.shown(e.file()) + ":" + e.line() + ":"
+                    + e.column() + ": " + e.problem()
                     + "\n    Fix the scene file, or restore it from the handout; this test judges your code once it loads.");
         }
         BufferedImage reference = PngReader.read(referenceFile);
@@ -68,7 +72,7 @@ public abstract class RenderTestBase {
         } catch (RuntimeException | StackOverflowError e) {
             StudentTask thrower = StudentFrames.taskThatThrew(e);
             if (thrower != null && thrower != task()) {
-                throw new NotThisTasksFault("rendering " + file + " stopped: " + thrower.label() + " threw " + e
+                throw new NotThisTasksFault("rendering " + shown + " stopped: " + thrower.label() + " threw " + e
                         + StudentFrames.where(e) + ".\n    Work on the TODO(Task " + thrower.number + ") comments in "
                         + String.join(" and ", thrower.files) + "; this test can judge your " + task().label()
                         + " code once the render runs.");
@@ -81,7 +85,7 @@ public abstract class RenderTestBase {
             return;
         }
         String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference);
-        String differs = file + " does not look like " + referenceFile + ": " + result.summary();
+        String differs = shown + " does not look like " + referenceShown + ": " + result.summary();
         String see = "\n    See your image, the reference and where they differ in " + report;
         List<String> unfinished = new ArrayList<>();
         List<String> unfinishedTasks = new ArrayList<>();
@@ -101,7 +105,7 @@ public abstract class RenderTestBase {
         String own = BasicChecks.problem(task(), loaded);
         if (!unfinished.isEmpty() && own == null) {
             // The first line says it all, since a test summary may show only that line.
-            throw new NotThisTasksFault(file + " also needs " + inWords(unfinishedTasks)
+            throw new NotThisTasksFault(shown + " also needs " + inWords(unfinishedTasks)
                     + (unfinished.size() == 1 ? ", which does" : ", which do") + " not work yet: this test judges your " + task().label() + " code once "
                     + (unfinished.size() == 1 ? "it works" : "they work") + ".\n    " + differs + ".\n    Your " + task().label()
                     + " code passes its basic check; these fail theirs:\n      " + String.join("\n      ", unfinished) + see);

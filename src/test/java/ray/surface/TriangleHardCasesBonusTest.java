@@ -2,7 +2,6 @@ package ray.surface;
 
 import static org.junit.Assert.fail;
 
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -16,6 +15,7 @@ import ray.Ray;
 import ray.math.Vec3;
 import ray.scene.ObjReader;
 import ray.testing.Points;
+import ray.testing.ProjectFolder;
 import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
@@ -306,7 +306,7 @@ public class TriangleHardCasesBonusTest {
         final List<int[]> edges = new ArrayList<>();
 
         IcosphereMesh(Vec3 center) {
-            MeshData data = ObjReader.read(Path.of("scenes/meshes/icosphere-room.obj"));
+            MeshData data = ObjReader.read(ProjectFolder.resolve("scenes", "meshes", "icosphere-room.obj"));
             double[] p = data.positions;
             for (int i = 0; i < p.length; i += 3) {
                 vertices.add(new Vec3(p[i], p[i + 1], p[i + 2]).plus(center));
