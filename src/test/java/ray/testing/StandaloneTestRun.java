@@ -22,7 +22,9 @@ import org.junit.runner.Description;
 import org.junit.runner.JUnitCore;
 import org.junit.runner.Request;
 import org.junit.runner.RunWith;
+import org.junit.runner.Runner;
 import org.junit.runner.manipulation.Filter;
+import org.junit.runner.manipulation.NoTestsRemainException;
 import org.junit.runner.notification.Failure;
 import org.junit.runner.notification.RunListener;
 
@@ -149,11 +151,18 @@ public final class StandaloneTestRun {
                 ignored[0]++;
             }
         });
-        Request request = Request.classes(classes.toArray(new Class<?>[0]));
-        if (!filters.isEmpty()) {
-            request = request.filterWith(new PatternFilter(filters));
+        // Class by class, so that a class none of whose tests the filter selects is left out quietly,
+        // as Gradle leaves it out (JUnit would report it as a failure).
+        Filter filter = filters.isEmpty() ? Filter.ALL : new PatternFilter(filters);
+        for (Class<?> type : classes) {
+            Runner runner = Request.aClass(type).getRunner();
+            try {
+                filter.apply(runner);
+            } catch (NoTestsRemainException notSelected) {
+                continue;
+            }
+            core.run(runner);
         }
-        core.run(request);
         // A finished test passed unless it failed or its assumption did not hold (skipped); an ignored
         // test never starts. A failure outside any test (a class's @BeforeClass) counts as one failed
         // test, as Gradle counts it.
