@@ -35,15 +35,7 @@ public class RenderTestsFromOtherFoldersTest {
     public final TemporaryFolder temporary = new TemporaryFolder();
 
     /** What JUnitCore printed and its exit code (0: every test passed). */
-    private static final class Run {
-        final int exit;
-        final String output;
-
-        Run(int exit, String output) {
-            this.exit = exit;
-            this.output = output;
-        }
-
+    private record Run(int exit, String output) {
         @Override
         public String toString() {
             return "exit " + exit + ", output:\n" + output;
@@ -70,8 +62,8 @@ public class RenderTestsFromOtherFoldersTest {
     private static void assertAllPassed(Run run) {
         int count = testCount();
         assertTrue("the class has no tests", count > 0);
-        assertEquals(run.toString(), 0, run.exit);
-        assertTrue(run.toString(), run.output.contains("OK (" + count + " test" + (count == 1 ? "" : "s") + ")"));
+        assertEquals(run.toString(), 0, run.exit());
+        assertTrue(run.toString(), run.output().contains("OK (" + count + " test" + (count == 1 ? "" : "s") + ")"));
     }
 
     @Test
@@ -115,13 +107,13 @@ public class RenderTestsFromOtherFoldersTest {
 
         Run run = junit(working, String.join(File.pathSeparator, classPath), temporary.newFile("nowhere.log").toPath());
 
-        assertEquals(run.toString(), 1, run.exit);
+        assertEquals(run.toString(), 1, run.exit());
         String expected = "ray.testing.NotThisTasksFault: cannot find the ray1 project folder (the one with scenes/ and "
                 + "settings.gradle) in or above the working folder " + working + " or the test classes' folder " + copy
                 + "; open the ray1 folder itself in your IDE, or run the tests from it";
-        assertTrue(run.toString(), run.output.lines().anyMatch(expected::equals));
+        assertTrue(run.toString(), run.output().lines().anyMatch(expected::equals));
         // It fails the class once, before any scene is rendered, rather than each test with its own trace.
-        assertTrue(run.toString(), run.output.contains("Tests run: 0,  Failures: 1"));
+        assertTrue(run.toString(), run.output().contains("Tests run: 0,  Failures: 1"));
     }
 
     private static void copyTree(Path from, Path to) throws IOException {

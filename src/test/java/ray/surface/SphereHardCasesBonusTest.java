@@ -148,15 +148,8 @@ public class SphereHardCasesBonusTest {
         }
     }
 
-    /** A sphere and a ray at it. (A class, not a record: Gradle's test scanner cannot read record class files.) */
-    private static final class Case {
-        final Sphere sphere;
-        final Ray ray;
-
-        Case(Sphere sphere, Ray ray) {
-            this.sphere = sphere;
-            this.ray = ray;
-        }
+    /** A sphere and a ray at it. */
+    private record Case(Sphere sphere, Ray ray) {
     }
 
     /**
@@ -184,15 +177,15 @@ public class SphereHardCasesBonusTest {
         private double worstError;
 
         void check(Case c, boolean far) {
-            double exact = exactRoot(c.sphere, c.ray, far);
+            double exact = exactRoot(c.sphere(), c.ray(), far);
             IntersectionRecord out = new IntersectionRecord();
-            boolean hit = c.sphere.intersect(out, c.ray);
+            boolean hit = c.sphere().intersect(out, c.ray());
             double error = hit ? Math.abs(out.t - exact) / exact : Double.POSITIVE_INFINITY;
             if (!(error <= ROOT_TOLERANCE)) {
                 count++;
                 if (count == 1 || error > worstError) {
                     worstError = error;
-                    worst = String.format(Locale.ROOT, "%s at %s: %s, the exact %s root is t = %s", c.ray, c.sphere,
+                    worst = String.format(Locale.ROOT, "%s at %s: %s, the exact %s root is t = %s", c.ray(), c.sphere(),
                             hit ? "t = " + out.t + String.format(Locale.ROOT, " (%.0f ulps off)", Math.abs(out.t - exact) / Math.ulp(exact))
                                     : "missed",
                             far ? "far" : "near", exact);
