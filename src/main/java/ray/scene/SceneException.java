@@ -15,7 +15,7 @@ public class SceneException extends RuntimeException {
 
     /** {@code problem} is put on one line (see {@link #oneLine}), whatever it quotes from the file. */
     public SceneException(Path file, int line, int column, String problem) {
-        super(file + ":" + line + ":" + column + ": " + oneLine(problem));
+        super(located(file, line, column, oneLine(problem)));
         this.file = file;
         this.line = line;
         this.column = column;
@@ -32,6 +32,18 @@ public class SceneException extends RuntimeException {
 
     public int column() {
         return column;
+    }
+
+    /**
+     * The message with the file named as {@code shownFile} (a path relative to the project, say,
+     * where the file was read by its absolute path).
+     */
+    public String messageNaming(Path shownFile) {
+        return located(shownFile, line, column, problem);
+    }
+
+    private static String located(Path file, int line, int column, String problem) {
+        return file + ":" + line + ":" + column + ": " + problem;
     }
 
     /** The message without its location. */

@@ -61,8 +61,7 @@ public abstract class RenderTestBase {
         try {
             loaded = SceneLoader.load(file);
         } catch (SceneException e) {
-            throw new NotThisTasksFault("the scene does not load: " + RenderScenes.shown(e.file()) + ":" + e.line() + ":"
-                    + e.column() + ": " + e.problem()
+            throw new NotThisTasksFault("the scene does not load: " + e.messageNaming(RenderScenes.shown(e.file()))
                     + "\n    Fix the scene file, or restore it from the handout; this test judges your code once it loads.");
         }
         BufferedImage reference = PngReader.read(referenceFile);
