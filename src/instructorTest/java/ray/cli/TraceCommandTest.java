@@ -201,9 +201,9 @@ public class TraceCommandTest {
 
     /**
      * globe.xml, pixel (160, 120) hits the unit sphere at the origin: (u, v) follow from the hit's
-     * unit normal by u = ½ + atan2(x, z)/2π, v = ½ + asin(y)/π; the texel is ((int) (u·512 + ½),
-     * (int) (v·256 + ½)), row H − 1 − j of the texture file from the top, and its color / 255 is
-     * the kd that the diffuse terms use.
+     * unit normal by u = ½ + atan2(x, z)/2π, v = ½ + asin(y)/π; the texel is column (int) (u·512 + ½)
+     * and row (int) ((1 − v)·256 + ½) of the texture file, counted from its top, and its color / 255
+     * is the kd that the diffuse terms use.
      */
     @Test
     public void texturedPixelShowsItsTexCoordsTexelAndColor() throws Exception {
@@ -216,12 +216,12 @@ public class TraceCommandTest {
         String lookup = section(out, "Shading at the hit", "Light 1");
         assertVec(v(u, v, 0), vec2(row(lookup, "(u, v)")), TOL);
         int i = (int) (u * 512 + 0.5);
-        int j = (int) (v * 256 + 0.5);
+        int fromTop = (int) ((1 - (float) v) * 256 + 0.5);
         assertEquals(256, i);
-        assertEquals(150, j);
+        assertEquals(106, fromTop);
         String texel = row(lookup, "texel");
-        assertTrue(texel, texel.startsWith("texel        (256, 150) of 512×256") && texel.contains("row 105 of the image file from the top"));
-        int[] file = pixel(PngReader.read(Path.of("scenes/textures/globe.png")), i, 255 - j);
+        assertTrue(texel, texel.startsWith("texel        (256, 106) of 512×256") && texel.contains("rows count from the image file's top"));
+        int[] file = pixel(PngReader.read(Path.of("scenes/textures/globe.png")), i, fromTop);
         double[] color = numbers(row(out, "its color"));
         assertArrayEquals(file, new int[] {(int) color[0], (int) color[1], (int) color[2]});
         Vec3 kd = v(file[0] / 255.0, file[1] / 255.0, file[2] / 255.0);

@@ -208,7 +208,7 @@ public class GraderTest {
 
     /**
      * A sphere whose normal is r long and the two texture lookups that miss the texel's center or flip
-     * its rows are named in each of their task's failed render tests, while the other tasks, which
+     * its rows after rounding are named in each of their task's failed render tests, while the other tasks, which
      * are the solution's and correct, never get a mistake's name.
      */
     @Test(timeout = 900_000)
@@ -217,7 +217,7 @@ public class GraderTest {
         for (String[] c : new String[][] {
                 {"sphere-normal-unnormalized", "Task 2 ", "SphereRenderTest.", "gives the normal as hit − center without dividing by the radius"},
                 {"texture-no-half", "Task 5 ", "TextureRenderTest.", "(int)(u·W) without + 0.5"},
-                {"texture-flipped-rows", "Task 5 ", "TextureRenderTest.", "flips the row itself"}}) {
+                {"texture-rows-flipped-after-rounding", "Task 5 ", "TextureRenderTest.", "flips it to H − 1 − j, one row off"}}) {
             List<Map<String, Object>> tests = (List<Map<String, Object>>) grade(solutionWithVariant(c[0]), c[0]).get("tests");
             List<Map<String, Object>> failed = tests.stream()
                     .filter(t -> ((String) t.get("name")).contains(c[2]) && "failed".equals(t.get("status")))

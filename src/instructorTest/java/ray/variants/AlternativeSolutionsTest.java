@@ -71,7 +71,8 @@ public class AlternativeSolutionsTest {
     @Test
     public void textureLookupsWrittenAnyCorrectWayEarnEveryPoint() throws Exception {
         assertEveryPoint(Variant.correct("texture-modulo", 5), Variant.correct("texture-wrap-first", 5),
-                Variant.correct("texture-if-chains", 5), Variant.correct("texture-round", 5));
+                Variant.correct("texture-if-chains", 5), Variant.correct("texture-round", 5),
+                Variant.correct("texture-image-rows", 5));
     }
 
     /**
@@ -101,8 +102,9 @@ public class AlternativeSolutionsTest {
                 Variant.wrong("sphere-far-root", 2), Variant.wrong("sphere-normal-inward", 2),
                 Variant.wrong("sphere-normal-unnormalized", 2),
                 Variant.wrong("sphere-unit-direction-assumed", 2), Variant.wrong("triangle-no-sum-check", 3),
-                Variant.wrong("group-first-hit", 4), Variant.wrong("texture-no-half", 5), Variant.wrong("texture-flipped-rows", 5),
-                Variant.wrong("texture-clamp-to-width", 5))) {
+                Variant.wrong("group-first-hit", 4), Variant.wrong("texture-no-half", 5),
+                Variant.wrong("texture-rows-flipped-after-rounding", 5), Variant.wrong("texture-rows-not-flipped", 5),
+                Variant.wrong("texture-round-then-flip", 5), Variant.wrong("texture-clamp-to-width", 5))) {
             List<VariantGrading.Outcome> outcomes = VariantGrading.run(wrong, (task, type) -> task == wrong.task, work);
             assertTrue(wrong + " ran no test of its task", !outcomes.isEmpty());
             List<VariantGrading.Outcome> lost = outcomes.stream().filter(o -> !o.bonus && !o.passed()).collect(Collectors.toList());

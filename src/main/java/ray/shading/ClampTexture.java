@@ -15,15 +15,16 @@ public class ClampTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        // TODO(Task 5): return the color of the texel nearest to (u, v), clamped to the image.
-        //   1) With W = image.width() and H = image.height(), the nearest texel is column
-        //      i = (int) (u·W + 0.5) and row j = (int) (v·H + 0.5), as in RepeatTexture.
-        //   2) Clamp i to 0 … W − 1 and j to 0 … H − 1, so that u = 1.25 reads the right-hand column.
-        //   3) Return image.get(i, j) (j counts rows from the image's bottom, as v does).
+        // TODO(Task 5): return the color of the texel that (u, v) picks, clamped to the image.
+        //   1) With W = image.width() and H = image.height(), the column is i = (int) (u·W + 0.5) and
+        //      the row, counted from the image's top, is (int) ((1 − v)·H + 0.5), as in RepeatTexture.
+        //   2) Clamp the column to 0 … W − 1 and the row to 0 … H − 1, so that u = 1.25 reads the
+        //      right-hand column and v = 1.25 the top row.
+        //   3) Return texel(column, row).
         // BEGIN SOLUTION
-        int i = Math.max(0, Math.min(image.width() - 1, (int) (u * image.width() + 0.5)));
-        int j = Math.max(0, Math.min(image.height() - 1, (int) (v * image.height() + 0.5)));
-        return image.get(i, j);
+        int column = Math.max(0, Math.min(image.width() - 1, (int) (u * image.width() + 0.5)));
+        int row = Math.max(0, Math.min(image.height() - 1, (int) ((1 - v) * image.height() + 0.5)));
+        return texel(column, row);
         // END SOLUTION
         // STUB: return Vec3.ZERO;
     }

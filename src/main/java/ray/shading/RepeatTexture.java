@@ -15,19 +15,22 @@ public class RepeatTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        // TODO(Task 5): return the color of the texel nearest to (u, v), repeating the image.
-        //   1) With W = image.width() and H = image.height(), the nearest texel is column
-        //      i = (int) (u·W + 0.5) and row j = (int) (v·H + 0.5). Use the cast as written: the
-        //      reference images round this way ((int) drops the fraction, toward zero).
-        //   2) Wrap i into 0 … W − 1 and j into 0 … H − 1, so that u = 1.25 reads like u = 0.25. Careful:
-        //      Java's % keeps the sign of a negative i (−1 % W is −1); Math.floorMod(i, W) does not.
-        //   3) Return image.get(i, j) (j counts rows from the image's bottom, as v does).
+        // TODO(Task 5): return the color of the texel that (u, v) picks, repeating the image.
+        //   1) With W = image.width() and H = image.height(), the column is i = (int) (u·W + 0.5) and
+        //      the row, counted from the image's top, is (int) ((1 − v)·H + 0.5). v counts up from the
+        //      bottom but rows count down from the top, so turn v into 1 − v first, then scale and round
+        //      (flipping after the rounding, H − 1 − (int) (v·H + 0.5), is one row off everywhere). Use
+        //      the casts as written: the reference images round this way ((int) drops the fraction).
+        //   2) Wrap the column into 0 … W − 1 and the row into 0 … H − 1, so that u = 1.25 reads like
+        //      u = 0.25. Careful: Java's % keeps the sign of a negative number (−1 % W is −1);
+        //      Math.floorMod(i, W) does not.
+        //   3) Return texel(column, row).
         // BEGIN SOLUTION
         int width = image.width();
         int height = image.height();
-        int i = Math.floorMod((int) (u * width + 0.5), width);
-        int j = Math.floorMod((int) (v * height + 0.5), height);
-        return image.get(i, j);
+        int column = Math.floorMod((int) (u * width + 0.5), width);
+        int row = Math.floorMod((int) ((1 - v) * height + 0.5), height);
+        return texel(column, row);
         // END SOLUTION
         // STUB: return Vec3.ZERO;
     }

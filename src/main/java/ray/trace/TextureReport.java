@@ -9,10 +9,11 @@ import ray.surface.Sphere;
 
 /**
  * The texture lookup at a hit of a textured shader: the hit's (u, v), the texel the course's
- * convention picks for them, and the color the texture returns, which replaces kd. Where (u, v) lie
- * inside [0, 1]² the texel is the same for Repeat and Clamp and for every way of rounding, so a
- * lookup that returns another color is flagged; outside, the trace says what wrapping or clamping
- * must do and leaves the answer to the texture.
+ * convention picks for them (column (int) (u·W + ½), row (int) ((1 − v)·H + ½) counted from the
+ * top, as {@link Texture} says), and the color the texture returns, which replaces kd. Where that
+ * column and row lie inside the image, the texel is the same for Repeat and Clamp and for every
+ * correct way of rounding, so a lookup that returns another color is flagged; outside, the trace
+ * says what wrapping or clamping must do and leaves the answer to the texture.
  */
 final class TextureReport {
     private TextureReport() {
@@ -33,22 +34,23 @@ final class TextureReport {
             out.println(Fmt.row(in, "!", "(0, 0) is the sphere's south pole: does Sphere.intersect set texU and texV? See TODO(Task 2)"));
         }
         double columnAt = (double) u * w + 0.5; // in double, as getTexColor(double, double) computes it
-        double rowAt = (double) v * h + 0.5;
-        int i = (int) columnAt;
-        int j = (int) rowAt;
-        String where = "i = (int) (u·" + w + " + ½) = (int) " + Fmt.num(columnAt) + ", j = (int) (v·" + h + " + ½) = (int) " + Fmt.num(rowAt);
+        double rowAt = (1 - (double) v) * h + 0.5;
+        int column = (int) columnAt;
+        int row = (int) rowAt;
+        String where = "column (int) (u·" + w + " + ½) = (int) " + Fmt.num(columnAt) + ", row (int) ((1 − v)·" + h + " + ½) = (int) "
+                + Fmt.num(rowAt);
         Vec3 kd = texture.colorAt(hit);
         if (columnAt >= 0 && columnAt < w && rowAt >= 0 && rowAt < h) {
-            Vec3 texel = image.get(i, j);
-            out.println(Fmt.row(in, "texel", "(" + i + ", " + j + ") of " + w + "×" + h + "   (" + where + "; j counts from the bottom,"
-                    + " so it is row " + (h - 1 - j) + " of the image file from the top)"));
+            Vec3 texel = image.get(column, h - 1 - row); // image.get counts rows from the bottom
+            out.println(Fmt.row(in, "texel", "(" + column + ", " + row + ") of " + w + "×" + h + "   (" + where
+                    + "; rows count from the image file's top)"));
             out.println(Fmt.row(in, "its color", Fmt.rgb8(eightBit(texel)) + " in the file, / 255 = " + Fmt.vec(texel)));
             if (!kd.equals(texel)) {
                 out.println(Fmt.row(in, "!", texture.getClass().getSimpleName() + ".getTexColor returned " + Fmt.vec(kd)
                         + ", not that texel's color: is it still the stub? See TODO(Task 5)"));
             }
         } else {
-            out.println(Fmt.row(in, "texel", "(" + i + ", " + j + ") before it is"
+            out.println(Fmt.row(in, "texel", "(" + column + ", " + row + ") before it is"
                     + " brought into the " + w + "×" + h + " image (" + where + "): a RepeatTexture wraps it, a ClampTexture clamps it"));
         }
         out.println(Fmt.row(in, "kd", Fmt.vec(kd) + "   (" + texture.getClass().getSimpleName() + ".getTexColor(u, v))"));

@@ -165,22 +165,28 @@ final class BasicChecks {
         return null;
     }
 
-    /** A 2 × 2 texture of four colors: the lookup at each texel's center (u = i / 2, v = j / 2) must give that texel. */
+    /**
+     * A 2 × 2 texture of four colors: the lookup at each texel's center (u = column / 2 and
+     * v = 1 − row / 2, the row counted from the top) must give that texel.
+     */
     private static String textureProblem() {
         Image image = new Image(2, 2);
         for (int i = 0; i < 2; i++) {
             for (int j = 0; j < 2; j++) {
-                image.set(i, j, new Vec3(i, j, 0.5));
+                image.set(i, j, new Vec3(i, j, 0.5)); // j counts from the bottom
             }
         }
         for (Supplier<Texture> make : java.util.List.<Supplier<Texture>>of(() -> new RepeatTexture(image), () -> new ClampTexture(image))) {
             Texture texture = make.get();
-            for (int i = 0; i < 2; i++) {
-                for (int j = 0; j < 2; j++) {
-                    Vec3 color = texture.getTexColor(0.5 * i, 0.5 * j);
-                    if (color == null || !close(color, image.get(i, j))) {
-                        return texture.getClass().getSimpleName() + ".getTexColor(" + (0.5 * i) + ", " + (0.5 * j)
-                                + ") on a 2 × 2 image returned " + color + "; expected texel (" + i + ", " + j + "), " + image.get(i, j);
+            for (int column = 0; column < 2; column++) {
+                for (int row = 0; row < 2; row++) {
+                    double u = 0.5 * column;
+                    double v = 1 - 0.5 * row;
+                    Vec3 expected = image.get(column, 1 - row);
+                    Vec3 color = texture.getTexColor(u, v);
+                    if (color == null || !close(color, expected)) {
+                        return texture.getClass().getSimpleName() + ".getTexColor(" + u + ", " + v + ") on a 2 × 2 image returned "
+                                + color + "; expected texel (" + column + ", " + row + ") counted from the top-left, " + expected;
                     }
                 }
             }

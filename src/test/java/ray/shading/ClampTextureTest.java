@@ -1,6 +1,7 @@
 package ray.shading;
 
 import static ray.shading.TextureLookups.assertLookup;
+import static ray.shading.TextureLookups.assertTexel;
 
 import org.junit.Rule;
 import org.junit.Test;
@@ -10,9 +11,10 @@ import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
- * Checks ClampTexture.getTexColor on a 4×3 image of distinct texels: the nearest texel
- * i = (int)(u·W + ½), j = (int)(v·H + ½), clamped to the image, so beyond [0, 1] the edge texels
- * extend. Points inside are at least 0.2 of a texel from an edge between texels.
+ * Checks ClampTexture.getTexColor on a 4×3 image of distinct texels: column (int)(u·W + ½) and row
+ * (int)((1 − v)·H + ½) from the top, clamped to the image, so beyond [0, 1] the edge texels extend.
+ * General points inside are at least 0.2 of a texel from an edge between texels; the edge cases are
+ * hand-computed.
  */
 @Points(value = 1, task = StudentTask.TEXTURE)
 public class ClampTextureTest {
@@ -21,23 +23,23 @@ public class ClampTextureTest {
 
     private static final int W = 4;
     private static final int H = 3;
-    private static final String RULE = "the nearest texel is i = (int)(u·W + 0.5), j = (int)(v·H + 0.5), clamped to"
-            + " 0…W−1 and 0…H−1, and image.get(i, j) counts j from the bottom";
+    private static final String RULE = "the texel is column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5) counted from the"
+            + " top, each clamped to 0…W−1 and 0…H−1, read with texel(column, row)";
     private final Image image = TextureLookups.distinctTexels(W, H);
     private final ClampTexture texture = new ClampTexture(image);
 
     private void check(double u, double v) {
-        assertLookup(RULE, texture, W, H, u, v, i -> Math.max(0, Math.min(W - 1, i)), j -> Math.max(0, Math.min(H - 1, j)));
+        assertLookup(RULE, texture, W, H, u, v, i -> Math.max(0, Math.min(W - 1, i)), r -> Math.max(0, Math.min(H - 1, r)));
     }
 
     @Test
     @Points(value = 2, task = StudentTask.TEXTURE)
     public void eachTexelIsReadNearItsCenter() {
-        for (int i = 0; i < W; i++) {
-            for (int j = 0; j < H; j++) {
+        for (int column = 0; column < W; column++) {
+            for (int row = 0; row < H; row++) {
                 for (double du : new double[] {-0.3, 0, 0.3}) {
                     for (double dv : new double[] {-0.3, 0, 0.3}) {
-                        check((i + du) / W, (j + dv) / H);
+                        check((column + du) / W, 1 - (row + dv) / H);
                     }
                 }
             }
@@ -45,19 +47,32 @@ public class ClampTextureTest {
     }
 
     @Test
-    public void vCountsRowsFromTheBottomAndUColumnsFromTheLeft() {
-        check(0.0, 0.0);
-        check(0.75, 0.0);
-        check(0.0, 2 / 3.0);
-        check(0.5, 1 / 3.0);
+    public void rowsCountFromTheTopAndVFromTheBottom() {
+        assertTexel(RULE, texture, W, H, 0.0, 1.0, 0, 0); // v = 1: row 0, the top-left texel
+        assertTexel(RULE, texture, W, H, 0.75, 1.0, 3, 0);
+        check(0.0, 1 / 3.0); // row 2, the bottom row
+        check(0.5, 2 / 3.0);
+    }
+
+    /**
+     * v = 0 gives row (int)(3.5) = 3, one past the last, clamped to row 2, the bottom (where Repeat
+     * wraps to the top); u = 1 gives column 4, clamped to 3.
+     */
+    @Test
+    @Points(value = 2, task = StudentTask.TEXTURE)
+    public void theImagesEdgesClampAsTheCourseDoes() {
+        assertTexel(RULE, texture, W, H, 0.0, 0.0, 0, 2);
+        assertTexel(RULE, texture, W, H, 1.0, 0.0, 3, 2);
+        assertTexel(RULE, texture, W, H, 1.0, 1.0, 3, 0);
+        assertTexel(RULE, texture, W, H, 0.375, 0.5, 2, 2); // on texel edges: see RepeatTextureTest
     }
 
     @Test
     @Points(value = 2, task = StudentTask.TEXTURE)
     public void coordinatesBeyondTheImageReadItsEdge() {
         check(1.0, 0.4); // u·W + ½ = 4.5 → column 4, clamped to 3 (not wrapped to 0)
-        check(0.97, 0.97); // column 4 and row 3, both one past the last: the top-right texel
-        check(1.6, 0.1);
+        check(0.97, 0.03); // column 4 and row 3, both one past the last: the bottom-right texel
+        check(1.6, 0.9);
         check(0.45, 2.5); // the top row
         check(25, 40);
         check(-0.5, 0.4); // the left column

@@ -1,6 +1,7 @@
 package ray.shading;
 
 import static ray.shading.TextureLookups.assertLookup;
+import static ray.shading.TextureLookups.assertTexel;
 
 import org.junit.Rule;
 import org.junit.Test;
@@ -10,9 +11,10 @@ import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
- * Checks RepeatTexture.getTexColor on a 4×3 image of distinct texels: the nearest texel
- * i = (int)(u·W + ½), j = (int)(v·H + ½), wrapped into the image. Every point is at least 0.2 of a
- * texel from an edge between texels (see {@link TextureLookups} on what is accepted where).
+ * Checks RepeatTexture.getTexColor on a 4×3 image of distinct texels: column (int)(u·W + ½) and row
+ * (int)((1 − v)·H + ½) from the top, wrapped into the image. Texel (column, row)'s center is at
+ * u = column/W, v = 1 − row/H. The general cases keep at least 0.2 of a texel from any edge between
+ * texels (see {@link TextureLookups} on what is accepted where); the edge cases are hand-computed.
  */
 @Points(value = 1, task = StudentTask.TEXTURE)
 public class RepeatTextureTest {
@@ -21,24 +23,24 @@ public class RepeatTextureTest {
 
     private static final int W = 4;
     private static final int H = 3;
-    private static final String RULE = "the nearest texel is i = (int)(u·W + 0.5), j = (int)(v·H + 0.5), wrapped into"
-            + " 0…W−1 and 0…H−1 (Math.floorMod), and image.get(i, j) counts j from the bottom";
+    private static final String RULE = "the texel is column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5) counted from the"
+            + " top, each wrapped into 0…W−1 and 0…H−1 (Math.floorMod), read with texel(column, row)";
     private final Image image = TextureLookups.distinctTexels(W, H);
     private final RepeatTexture texture = new RepeatTexture(image);
 
     private void check(double u, double v) {
-        assertLookup(RULE, texture, W, H, u, v, i -> Math.floorMod(i, W), j -> Math.floorMod(j, H));
+        assertLookup(RULE, texture, W, H, u, v, i -> Math.floorMod(i, W), r -> Math.floorMod(r, H));
     }
 
     @Test
     @Points(value = 2, task = StudentTask.TEXTURE)
     public void eachTexelIsReadNearItsCenter() {
-        // Texel (i, j)'s center is at u = i/W, v = j/H; ±0.3 of a texel still reads it.
-        for (int i = 0; i < W; i++) {
-            for (int j = 0; j < H; j++) {
+        // Texel (column, row)'s center is at u = column/W, v = 1 − row/H; ±0.3 of a texel still reads it.
+        for (int column = 0; column < W; column++) {
+            for (int row = 0; row < H; row++) {
                 for (double du : new double[] {-0.3, 0, 0.3}) {
                     for (double dv : new double[] {-0.3, 0, 0.3}) {
-                        check((i + du) / W, (j + dv) / H);
+                        check((column + du) / W, 1 - (row + dv) / H);
                     }
                 }
             }
@@ -46,28 +48,58 @@ public class RepeatTextureTest {
     }
 
     @Test
-    public void vCountsRowsFromTheBottomAndUColumnsFromTheLeft() {
-        check(0.0, 0.0); // texel (0, 0): the bottom-left
-        check(0.75, 0.0); // (3, 0): the bottom-right
-        check(0.0, 2 / 3.0); // (0, 2): the top-left
-        check(0.5, 1 / 3.0); // (2, 1)
+    public void rowsCountFromTheTopAndVFromTheBottom() {
+        assertTexel(RULE, texture, W, H, 0.0, 1.0, 0, 0); // v = 1: (int)(0·3 + 0.5) = row 0, the top-left texel
+        assertTexel(RULE, texture, W, H, 0.75, 1.0, 3, 0); // the top-right texel
+        check(0.0, 1 / 3.0); // (int)((2/3)·3 + 0.5) = (int) 2.5: row 2, the bottom row
+        check(0.5, 2 / 3.0); // (int)(1 + 0.5): column 2, row 1
+    }
+
+    /**
+     * v = 0 is half a texel below the bottom row's center (v = 1/3 here): (int)((1 − 0)·3 + 0.5) = 3,
+     * one past the last row, which wraps to row 0, the top. So under Repeat the image's bottom edge
+     * reads its top row, as the course's renderer does; likewise u = 1 reads column 0.
+     */
+    @Test
+    @Points(value = 2, task = StudentTask.TEXTURE)
+    public void theImagesEdgesWrapAsTheCourseDoes() {
+        assertTexel(RULE, texture, W, H, 0.0, 0.0, 0, 0);
+        assertTexel(RULE, texture, W, H, 0.5, 0.0, 2, 0);
+        assertTexel(RULE, texture, W, H, 1.0, 0.5, 0, 2); // u = 1: (int)(4.5) = column 4, wrapped to 0
+        assertTexel(RULE, texture, W, H, 1.0, 1.0, 0, 0);
+    }
+
+    /**
+     * Exactly on the edges between texels, where two ways of rounding part: u = 0.375 makes
+     * u·4 + 0.5 = 2 and v = 0.5 makes (1 − v)·3 + 0.5 = 2, both exact in binary. The course takes
+     * column 2 and row 2, the lower of the two rows the edge separates, because it turns v into
+     * 1 − v before rounding. Rounding v·3 + 0.5 = 2 first and flipping to H − 2 gives row 1: that
+     * agrees everywhere but on such edges, where the reference images differ (a mesh whose vt sit on
+     * texel edges shows it).
+     */
+    @Test
+    public void onATexelEdgeTheCourseFlipsVBeforeRounding() {
+        assertTexel(RULE + "; v = 0.5 lies on the edge between rows 1 and 2, and (int)((1 − 0.5)·3 + 0.5) = 2 (flip v, then"
+                + " round), not H − (int)(0.5·3 + 0.5) = 1 (round, then flip)", texture, W, H, 0.375, 0.5, 2, 2);
+        assertTexel(RULE, texture, W, H, 1.375, -0.5, 2, 2);
     }
 
     @Test
     public void coordinatesAboveOneWrapAround() {
-        check(1.25, 0.1); // reads like u = 0.25: column 1
-        check(2.5, 1 + 2 / 3.0); // like (0.5, 2/3): texel (2, 2)
-        check(0.97, 0.9); // u·W + ½ = 4.38 → column 4, which wraps to 0; v: row 3 → 0
+        check(1.25, 0.9); // reads like u = 0.25: column 1; (int)(0.3 + 0.5) = row 0
+        check(2.5, 1 + 2 / 3.0); // like (0.5, 2/3): texel (2, 1)
+        check(0.97, 0.1); // column (int)(4.38) = 4, which wraps to 0; row (int)(3.2) = 3, which wraps to 0
         check(7.05, 5.3);
     }
 
     @Test
     @Points(value = 2, task = StudentTask.TEXTURE)
     public void negativeCoordinatesWrapIntoTheImage() {
-        // Java's % keeps the sign: −1 % 4 is −1, not a column. Either nearest-texel rounding is accepted here.
-        check(-0.25, 0.1);
+        // Java's % keeps the sign: −1 % 4 is −1, not a column. Either nearest-texel rounding is accepted where they part.
+        check(-0.25, 0.9);
         check(0.1, -0.6);
         check(-1.55, -2.25);
         check(-3.05, 1 / 3.0);
+        check(0.3, 1.9); // (1 − 1.9)·3 + 0.5 = −2.2: a negative row before wrapping
     }
 }

@@ -5,6 +5,11 @@ import ray.math.Vec3;
 
 /** {@link TextureLookups} for graded tests in other packages (the hidden tests). */
 public final class TextureLookupsAccess {
+    private static final String REPEAT = "a RepeatTexture wraps column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5),"
+            + " counted from the top, into the image";
+    private static final String CLAMP = "a ClampTexture clamps column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5),"
+            + " counted from the top, to the image";
+
     private TextureLookupsAccess() {
     }
 
@@ -12,17 +17,22 @@ public final class TextureLookupsAccess {
         return TextureLookups.distinctTexels(width, height);
     }
 
-    public static Vec3 texel(int width, int height, int i, int j) {
-        return TextureLookups.texel(width, height, i, j);
+    /** Texel (column, row) of a distinctTexels image, the row counted from the top. */
+    public static Vec3 texel(int width, int height, int column, int row) {
+        return TextureLookups.texel(width, height, column, row);
     }
 
     public static void assertRepeat(Texture texture, int width, int height, double u, double v) {
-        TextureLookups.assertLookup("a RepeatTexture wraps the nearest texel (int)(u·W + 0.5), (int)(v·H + 0.5) into the image",
-                texture, width, height, u, v, i -> Math.floorMod(i, width), j -> Math.floorMod(j, height));
+        TextureLookups.assertLookup(REPEAT, texture, width, height, u, v, i -> Math.floorMod(i, width), r -> Math.floorMod(r, height));
     }
 
     public static void assertClamp(Texture texture, int width, int height, double u, double v) {
-        TextureLookups.assertLookup("a ClampTexture clamps the nearest texel (int)(u·W + 0.5), (int)(v·H + 0.5) to the image",
-                texture, width, height, u, v, i -> Math.max(0, Math.min(width - 1, i)), j -> Math.max(0, Math.min(height - 1, j)));
+        TextureLookups.assertLookup(CLAMP, texture, width, height, u, v, i -> Math.max(0, Math.min(width - 1, i)),
+                r -> Math.max(0, Math.min(height - 1, r)));
+    }
+
+    /** Checks that the lookup at (u, v) is exactly texel (column, row) of a distinctTexels image. */
+    public static void assertTexel(Texture texture, int width, int height, double u, double v, int column, int row) {
+        TextureLookups.assertTexel(texture instanceof ClampTexture ? CLAMP : REPEAT, texture, width, height, u, v, column, row);
     }
 }

@@ -21,7 +21,7 @@ import ray.surface.Sphere;
  */
 public class TextureReportTest {
 
-    /** A 4×2 image whose texel (i, j) has the 8-bit color (10·i, 100·j, 7). */
+    /** A 4×2 image whose texel (i, j), j counted from the bottom, has the 8-bit color (10·i, 100·j, 7). */
     private static Image distinctTexels() {
         Image image = new Image(4, 2);
         for (int j = 0; j < 2; j++) {
@@ -32,7 +32,7 @@ public class TextureReportTest {
         return image;
     }
 
-    /** The convention for coordinates inside [0, 1]², written out for the test. */
+    /** The course's lookup with Repeat's wrap, written out for the test (image.get counts rows from the bottom). */
     private static final class NearestTexel extends Texture {
         NearestTexel() {
             super(distinctTexels());
@@ -40,7 +40,7 @@ public class TextureReportTest {
 
         @Override
         public Vec3 getTexColor(double u, double v) {
-            return image.get((int) (u * 4 + 0.5), (int) (v * 2 + 0.5));
+            return image.get(Math.floorMod((int) (u * 4 + 0.5), 4), 1 - Math.floorMod((int) ((1 - v) * 2 + 0.5), 2));
         }
     }
 
@@ -71,13 +71,16 @@ public class TextureReportTest {
         return text.toString();
     }
 
-    /** u·4 + ½ = 1.7 and v·2 + ½ = 1.7: texel (1, 1), the top row, so row 0 of the file; 8-bit (10, 100, 7). */
+    /**
+     * u·4 + ½ = 1.7 and (1 − v)·2 + ½ = 0.7 (v = 0.9 as a float): column 1 of row 0, the file's top
+     * row, which is j = 1 from the bottom; 8-bit (10, 100, 7).
+     */
     @Test
     public void texelInsideTheImageIsNamedWithItsFileRowAndColor() {
-        String out = report(new NearestTexel(), hitAt(0.3, 0.6));
-        assertTrue(out, out.contains("(u, v)       (0.3, 0.6)"));
-        assertTrue(out, out.contains("texel        (1, 1) of 4×2   (i = (int) (u·4 + ½) = (int) 1.7, j = (int) (v·2 + ½) = (int) 1.7;"
-                + " j counts from the bottom, so it is row 0 of the image file from the top)"));
+        String out = report(new NearestTexel(), hitAt(0.3, 0.9));
+        assertTrue(out, out.contains("(u, v)       (0.3, 0.9)"));
+        assertTrue(out, out.contains("texel        (1, 0) of 4×2   (column (int) (u·4 + ½) = (int) 1.7, row (int) ((1 − v)·2 + ½) ="
+                + " (int) 0.7; rows count from the image file's top)"));
         assertTrue(out, out.contains("its color    (10, 100, 7)  #0A6407 in the file, / 255 = (0.0392157, 0.392157, 0.027451)"));
         assertTrue(out, out.contains("kd           (0.0392157, 0.392157, 0.027451)   (NearestTexel.getTexColor(u, v))"));
         assertFalse(out, out.contains("!"));
@@ -85,17 +88,20 @@ public class TextureReportTest {
 
     @Test
     public void aLookupThatReturnsAnotherColorIsFlaggedAsTask5() {
-        String out = report(new StubTexture(), hitAt(0.3, 0.6));
+        String out = report(new StubTexture(), hitAt(0.3, 0.9));
         assertTrue(out, out.contains("!            StubTexture.getTexColor returned (0, 0, 0), not that texel's color:"
                 + " is it still the stub? See TODO(Task 5)"));
     }
 
-    /** u·4 + ½ = 5.3: column 5 of a 4-texel image, which only wrapping or clamping can answer. */
+    /**
+     * u·4 + ½ = 5.3 and (1 − 0.25)·2 + ½ = 2: column 5 and row 2 of a 4×2 image, which only wrapping
+     * or clamping can answer.
+     */
     @Test
     public void texelOutsideTheImageIsLeftToRepeatOrClamp() {
         String out = report(new StubTexture(), hitAt(1.2, 0.25));
-        assertTrue(out, out.contains("texel        (5, 1) before it is brought into the 4×2 image (i = (int) (u·4 + ½) = (int) 5.3,"
-                + " j = (int) (v·2 + ½) = (int) 1): a RepeatTexture wraps it, a ClampTexture clamps it"));
+        assertTrue(out, out.contains("texel        (5, 2) before it is brought into the 4×2 image (column (int) (u·4 + ½) = (int) 5.3,"
+                + " row (int) ((1 − v)·2 + ½) = (int) 2): a RepeatTexture wraps it, a ClampTexture clamps it"));
         assertFalse("no verdict outside the image", out.contains("!"));
     }
 

@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Known wrong: clamps to W and H instead of W − 1 and H − 1, one past the last texel. */
+/** Known wrong: clamps to W and H, one past the last column and row. */
 public class ClampTexture extends Texture {
     public ClampTexture() {
     }
@@ -14,8 +14,8 @@ public class ClampTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        int i = Math.max(0, Math.min(image.width(), (int) (u * image.width() + 0.5)));
-        int j = Math.max(0, Math.min(image.height(), (int) (v * image.height() + 0.5)));
-        return image.get(i, j);
+        int column = Math.max(0, Math.min(image.width(), (int) (u * image.width() + 0.5)));
+        int row = Math.max(0, Math.min(image.height(), (int) ((1 - v) * image.height() + 0.5)));
+        return texel(column, row);
     }
 }

@@ -14,8 +14,8 @@ public class RepeatTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        int i = Math.floorMod((int) (u * image.width() + 0.5), image.width());
-        int j = Math.floorMod((int) (v * image.height() + 0.5), image.height());
-        return image.get(i, j);
+        int column = Math.floorMod((int) (u * image.width() + 0.5), image.width());
+        int row = Math.floorMod((int) ((1 - v) * image.height() + 0.5), image.height());
+        return texel(column, row);
     }
 }

@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Clamps with if/else chains. */
+/** Clamps with if chains. */
 public class ClampTexture extends Texture {
     public ClampTexture() {
     }
@@ -14,18 +14,18 @@ public class ClampTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        int i = (int) (u * image.width() + 0.5);
-        int j = (int) (v * image.height() + 0.5);
-        if (i < 0) {
-            i = 0;
-        } else if (i > image.width() - 1) {
-            i = image.width() - 1;
+        int column = (int) (u * image.width() + 0.5);
+        int row = (int) ((1 - v) * image.height() + 0.5);
+        if (column < 0) {
+            column = 0;
+        } else if (column > image.width() - 1) {
+            column = image.width() - 1;
         }
-        if (j < 0) {
-            j = 0;
-        } else if (j > image.height() - 1) {
-            j = image.height() - 1;
+        if (row < 0) {
+            row = 0;
+        } else if (row > image.height() - 1) {
+            row = image.height() - 1;
         }
-        return image.get(i, j);
+        return texel(column, row);
     }
 }

@@ -14,20 +14,20 @@ public class RepeatTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        int i = (int) (u * image.width() + 0.5);
-        int j = (int) (v * image.height() + 0.5);
-        while (i >= image.width()) {
-            i -= image.width();
+        int column = (int) (u * image.width() + 0.5);
+        int row = (int) ((1 - v) * image.height() + 0.5);
+        while (column >= image.width()) {
+            column -= image.width();
         }
-        while (i < 0) {
-            i += image.width();
+        while (column < 0) {
+            column += image.width();
         }
-        while (j >= image.height()) {
-            j -= image.height();
+        while (row >= image.height()) {
+            row -= image.height();
         }
-        while (j < 0) {
-            j += image.height();
+        while (row < 0) {
+            row += image.height();
         }
-        return image.get(i, j);
+        return texel(column, row);
     }
 }

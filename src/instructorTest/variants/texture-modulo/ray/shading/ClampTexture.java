@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Clamps with Math.min and Math.max on the scaled coordinate first. */
+/** Math.min and Math.max in the other order. */
 public class ClampTexture extends Texture {
     public ClampTexture() {
     }
@@ -16,8 +16,8 @@ public class ClampTexture extends Texture {
     public Vec3 getTexColor(double u, double v) {
         int w = image.width();
         int h = image.height();
-        int i = (int) (u * w + 0.5);
-        int j = (int) (v * h + 0.5);
-        return image.get(Math.min(Math.max(i, 0), w - 1), Math.min(Math.max(j, 0), h - 1));
+        int column = (int) (u * w + 0.5);
+        int row = (int) ((1 - v) * h + 0.5);
+        return texel(Math.min(Math.max(column, 0), w - 1), Math.min(Math.max(row, 0), h - 1));
     }
 }

@@ -16,14 +16,14 @@ public class RepeatTexture extends Texture {
     public Vec3 getTexColor(double u, double v) {
         int w = image.width();
         int h = image.height();
-        int i = (int) (u * w + 0.5) % w;
-        int j = (int) (v * h + 0.5) % h;
-        if (i < 0) {
-            i += w;
+        int column = (int) (u * w + 0.5) % w;
+        int row = (int) ((1 - v) * h + 0.5) % h;
+        if (column < 0) {
+            column += w;
         }
-        if (j < 0) {
-            j += h;
+        if (row < 0) {
+            row += h;
         }
-        return image.get(i, j);
+        return texel(column, row);
     }
 }

@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Known wrong: (int)(u·W) without + 0.5. */
+/** Known wrong: rounds down with (int)(u·W) without + 0.5, so it takes the texel whose corner, not center, is nearest. */
 public class ClampTexture extends Texture {
     public ClampTexture() {
     }
@@ -14,8 +14,8 @@ public class ClampTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        int i = Math.max(0, Math.min(image.width() - 1, (int) (u * image.width())));
-        int j = Math.max(0, Math.min(image.height() - 1, (int) (v * image.height())));
-        return image.get(i, j);
+        int column = Math.max(0, Math.min(image.width() - 1, (int) (u * image.width())));
+        int row = Math.max(0, Math.min(image.height() - 1, (int) ((1 - v) * image.height())));
+        return texel(column, row);
     }
 }

@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Known wrong: (int)(u·W) without + 0.5, the texel whose corner, not center, is nearest. */
+/** Known wrong: rounds down with (int)(u·W) without + 0.5, so it takes the texel whose corner, not center, is nearest. */
 public class RepeatTexture extends Texture {
     public RepeatTexture() {
     }
@@ -14,8 +14,8 @@ public class RepeatTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        int i = Math.floorMod((int) (u * image.width()), image.width());
-        int j = Math.floorMod((int) (v * image.height()), image.height());
-        return image.get(i, j);
+        int column = Math.floorMod((int) (u * image.width()), image.width());
+        int row = Math.floorMod((int) ((1 - v) * image.height()), image.height());
+        return texel(column, row);
     }
 }

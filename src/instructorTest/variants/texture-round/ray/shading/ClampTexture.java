@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Math.round of the products, clamped. */
+/** Math.round of double products, clamped as longs. */
 public class ClampTexture extends Texture {
     public ClampTexture() {
     }
@@ -14,10 +14,10 @@ public class ClampTexture extends Texture {
 
     @Override
     public Vec3 getTexColor(double u, double v) {
-        long i = Math.round(u * image.width());
-        long j = Math.round(v * image.height());
-        int column = (int) Math.max(0, Math.min(image.width() - 1, i));
-        int row = (int) Math.max(0, Math.min(image.height() - 1, j));
-        return image.get(column, row);
+        long column = Math.round(u * image.width());
+        long row = Math.round((1 - v) * image.height());
+        int i = (int) Math.max(0, Math.min(image.width() - 1, column));
+        int r = (int) Math.max(0, Math.min(image.height() - 1, row));
+        return texel(i, r);
     }
 }

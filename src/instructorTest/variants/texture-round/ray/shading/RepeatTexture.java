@@ -16,8 +16,8 @@ public class RepeatTexture extends Texture {
     public Vec3 getTexColor(double u, double v) {
         int w = image.width();
         int h = image.height();
-        int i = Math.round((float) u * w);
-        int j = Math.round((float) v * h);
-        return image.get(Math.floorMod(i, w), Math.floorMod(j, h));
+        int column = Math.round((float) u * w);
+        int row = Math.round((float) (1 - v) * h);
+        return texel(Math.floorMod(column, w), Math.floorMod(row, h));
     }
 }

@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Clamps u and v to [0, 1] first, then takes the nearest texel with Math.floor. */
+/** Clamps u and v to [0, 1] first, then takes the texel with Math.floor. */
 public class ClampTexture extends Texture {
     public ClampTexture() {
     }
@@ -16,8 +16,8 @@ public class ClampTexture extends Texture {
     public Vec3 getTexColor(double u, double v) {
         double clampedU = Math.max(0, Math.min(1, u));
         double clampedV = Math.max(0, Math.min(1, v));
-        int i = (int) Math.floor(clampedU * image.width() + 0.5);
-        int j = (int) Math.floor(clampedV * image.height() + 0.5);
-        return image.get(Math.min(i, image.width() - 1), Math.min(j, image.height() - 1));
+        int column = (int) Math.floor(clampedU * image.width() + 0.5);
+        int row = (int) Math.floor((1 - clampedV) * image.height() + 0.5);
+        return texel(Math.min(column, image.width() - 1), Math.min(row, image.height() - 1));
     }
 }

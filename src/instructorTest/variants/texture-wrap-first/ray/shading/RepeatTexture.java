@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Wraps u and v into [0, 1) first, then takes the nearest texel with Math.floor. */
+/** Wraps u and v into [0, 1) first, then takes the texel with Math.floor. */
 public class RepeatTexture extends Texture {
     public RepeatTexture() {
     }
@@ -16,9 +16,9 @@ public class RepeatTexture extends Texture {
     public Vec3 getTexColor(double u, double v) {
         double wrappedU = u - Math.floor(u);
         double wrappedV = v - Math.floor(v);
-        int i = (int) Math.floor(wrappedU * image.width() + 0.5);
-        int j = (int) Math.floor(wrappedV * image.height() + 0.5);
-        // u just below 1 rounds up to column W, which is column 0 again.
-        return image.get(i % image.width(), j % image.height());
+        int column = (int) Math.floor(wrappedU * image.width() + 0.5);
+        int row = (int) Math.floor((1 - wrappedV) * image.height() + 0.5);
+        // u just below 1 rounds up to column W, and v = 0 to row H: both are index 0 again.
+        return texel(column % image.width(), row % image.height());
     }
 }
