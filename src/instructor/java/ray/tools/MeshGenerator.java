@@ -27,6 +27,9 @@ import ray.surface.MeshData;
  *     subdivided twice, wound inward.</li>
  * <li>{@code tablecloth.obj}: a square of two triangles, {@code f v/vt} faces, whose texture
  *     coordinates run from 0 to 4, so a repeating texture tiles it 4 × 4 times (scenes/textured).</li>
+ * <li>{@code square-repeat.obj} and {@code square-clamp.obj}: a square of two triangles facing +z,
+ *     {@code f v/vt} faces, whose texture coordinates cross the image's edges (the diagnostic
+ *     chart, scenes/textured/diagnostic.xml).</li>
  * </ul>
  *
  * <p>Every face is wound counter-clockwise seen from outside, so the geometric normal
@@ -51,6 +54,11 @@ public final class MeshGenerator {
         writeChecker(folder.resolve("checker.obj"));
         writeIcosphereRoom(folder.resolve("icosphere-room.obj"));
         writeTablecloth(folder.resolve("tablecloth.obj"));
+        // The diagnostic chart's squares: Repeat across the image's right and bottom edges, with u and
+        // 1 − v never below −½ texel (where (int) and Math.floor part, and correct lookups with them);
+        // Clamp beyond all four edges.
+        writeSquare(folder.resolve("square-repeat.obj"), 0, 1.5, -0.5, 1);
+        writeSquare(folder.resolve("square-clamp.obj"), -0.25, 1.25, -0.25, 1.25);
     }
 
     // Torus: major radius R (center of the tube to the y axis), minor radius r (the tube), lying in
@@ -259,6 +267,22 @@ public final class MeshGenerator {
                 double u = TABLECLOTH_REPEATS * (c[0] + 1) / 2;
                 double v = TABLECLOTH_REPEATS * (1 - c[1]) / 2;
                 out.println("vt " + num(u) + " " + num(v));
+            }
+            out.println("f 1/1 2/2 3/3 4/4");
+        }
+    }
+
+    /** The square [-1, 1]² in z = 0, facing +z, with u from u0 (left) to u1 and v from v0 (bottom) to v1. */
+    private static void writeSquare(Path file, double u0, double u1, double v0, double v1) throws IOException {
+        try (PrintWriter out = open(file)) {
+            header(out, file, "the square [-1, 1]^2 in z = 0 facing +z (2 triangles), u from " + num(u0) + " to " + num(u1)
+                    + " left to right, v from " + num(v0) + " to " + num(v1) + " bottom to top, f v/vt faces");
+            double[][] corners = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+            for (double[] c : corners) {
+                vertex(out, "v", c[0], c[1], 0);
+            }
+            for (double[] c : corners) {
+                out.println("vt " + num(c[0] < 0 ? u0 : u1) + " " + num(c[1] < 0 ? v0 : v1));
             }
             out.println("f 1/1 2/2 3/3 4/4");
         }

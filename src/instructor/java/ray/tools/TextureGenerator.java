@@ -23,6 +23,11 @@ import javax.imageio.ImageIO;
  * <li>{@code flower.png} (64×64): a five-petal flower on green, framed by a one-texel border of a
  *     different color on each side (top red, bottom blue, left yellow, right white), so a flipped
  *     row, a swapped u and v or a clamp to the wrong edge texel shows the wrong color there.</li>
+ * <li>{@code ruler.png} (4×4): texels big enough to count on a render. The top row is red and the
+ *     bottom row blue (both over the corners), the left column yellow and the right one white, and
+ *     the 2 × 2 inside a checker of dark and light green, dark at the top left. Which texel shows
+ *     where, and how tall the bands at the image's edges are, tells the course's row rule from one
+ *     that is a row off (scenes/textured/diagnostic.xml).</li>
  * </ul>
  *
  * <p>Usage: {@code TextureGenerator [FOLDER]} (default {@code scenes/textures}); run by
@@ -39,6 +44,7 @@ public final class TextureGenerator {
         write(moon(256, 128), folder.resolve("moon.png"));
         write(plaid(64), folder.resolve("plaid.png"));
         write(flower(64), folder.resolve("flower.png"));
+        write(ruler(4), folder.resolve("ruler.png"));
     }
 
     private static void write(BufferedImage image, Path file) throws IOException {
@@ -190,6 +196,29 @@ public final class TextureGenerator {
                 } else {
                     color = rgb(70, 150, 70);
                 }
+                if (x == 0) {
+                    color = rgb(250, 230, 30);
+                } else if (x == side - 1) {
+                    color = rgb(255, 255, 255);
+                }
+                if (y == 0) {
+                    color = rgb(230, 20, 20);
+                } else if (y == side - 1) {
+                    color = rgb(20, 40, 230);
+                }
+                image.setRGB(x, y, color);
+            }
+        }
+        return image;
+    }
+
+    // Ruler: one texel per band, so a lookup one row or column off shows as a band of the wrong
+    // height or color on the diagnostic chart.
+    static BufferedImage ruler(int side) {
+        BufferedImage image = new BufferedImage(side, side, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < side; y++) {
+            for (int x = 0; x < side; x++) {
+                int color = (x + y) % 2 == 0 ? rgb(30, 110, 40) : rgb(150, 220, 120);
                 if (x == 0) {
                     color = rgb(250, 230, 30);
                 } else if (x == side - 1) {
