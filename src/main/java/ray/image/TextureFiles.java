@@ -17,8 +17,8 @@ import ray.math.Vec3;
 /**
  * Reads a texture's image file (PNG, JPEG, GIF or BMP, whatever javax.imageio reads) into an
  * {@link Image} of texels: each is the file's 8-bit color divided by 255, with no sRGB decoding
- * (the course's convention), and texel (i, j) counts j from the <b>bottom</b> row, so that v = 0 is
- * the image's bottom edge. Alpha is ignored.
+ * (the course's convention), stored as every {@link Image} is, with j counting from the <b>bottom</b>
+ * row; lookups read it by row from the top through {@code Texture.texel}. Alpha is ignored.
  *
  * <p>Every problem is an {@link IllegalArgumentException} whose message starts with "image", for
  * the scene loader to report at the {@code <image>} element's line.
