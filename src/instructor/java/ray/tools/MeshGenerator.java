@@ -26,7 +26,8 @@ import ray.surface.MeshData;
  * <li>{@code icosphere-room.obj}: a closed mesh to be seen from inside (scenes/hard), an icosahedron
  *     subdivided twice, wound inward.</li>
  * <li>{@code tablecloth.obj}: a square of two triangles, {@code f v/vt} faces, whose texture
- *     coordinates run from 0 to 4, so a repeating texture tiles it 4 × 4 times (scenes/textured).</li>
+ *     coordinates run over four units (u from 0 to 4, v from −3 to 1), so a repeating texture tiles
+ *     it 4 × 4 times (scenes/textured).</li>
  * <li>{@code square-repeat.obj} and {@code square-clamp.obj}: a square of two triangles facing +z,
  *     {@code f v/vt} faces, whose texture coordinates cross the image's edges (the diagnostic
  *     chart, scenes/textured/diagnostic.xml).</li>
@@ -257,15 +258,17 @@ public final class MeshGenerator {
 
     private static void writeTablecloth(Path file) throws IOException {
         try (PrintWriter out = open(file)) {
-            header(out, file, String.format("the square [-1, 1]^2 in y = 0 (2 triangles), texture coordinates 0 to %s,"
-                    + " f v/vt faces", num(TABLECLOTH_REPEATS)));
+            header(out, file, String.format("the square [-1, 1]^2 in y = 0 (2 triangles), u from 0 to %s and v from %s to 1,"
+                    + " f v/vt faces", num(TABLECLOTH_REPEATS), num(1 - TABLECLOTH_REPEATS)));
             double[][] corners = {{-1, 1}, {1, 1}, {1, -1}, {-1, -1}};
             for (double[] c : corners) {
                 vertex(out, "v", c[0], 0, c[1]);
             }
             for (double[] c : corners) {
                 double u = TABLECLOTH_REPEATS * (c[0] + 1) / 2;
-                double v = TABLECLOTH_REPEATS * (1 - c[1]) / 2;
+                // v ends at 1, not starts at 0: above 1 + ½ texel the course's (int) and Math.floor
+                // pick different rows, and both are correct lookups, so no shipped scene goes there.
+                double v = 1 - TABLECLOTH_REPEATS + TABLECLOTH_REPEATS * (1 - c[1]) / 2;
                 out.println("vt " + num(u) + " " + num(v));
             }
             out.println("f 1/1 2/2 3/3 4/4");

@@ -103,7 +103,6 @@ public class Task5HiddenTest {
      * wrapping or clamping.
      */
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE, visibility = Visibility.HIDDEN)
     public void coordinatesOnTexelEdgesRoundAsTheCourseDoes() {
         for (int width = 1; width <= 8; width++) {
             for (int height = 1; height <= 8; height++) {

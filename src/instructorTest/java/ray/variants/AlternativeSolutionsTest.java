@@ -114,6 +114,23 @@ public class AlternativeSolutionsTest {
         }
     }
 
+    /**
+     * Rounding v·H + 0.5 down and then flipping to H − j picks the nearest texel everywhere except
+     * exactly on an edge between rows, so it must lose the tests on texel edges and nothing else: a
+     * rule stated to the last tie costs only the tests about the tie.
+     */
+    @Test
+    public void roundingBeforeTheFlipLosesOnlyTheTexelEdgeTests() throws Exception {
+        Variant variant = Variant.wrong("texture-floor-then-flip", 5);
+        List<VariantGrading.Outcome> outcomes = VariantGrading.run(variant,
+                (task, type) -> task == variant.task || type.startsWith(RENDER_TESTS), work);
+        summarize(variant, outcomes);
+        List<String> failed = outcomes.stream().filter(o -> !o.passed()).map(o -> o.test).sorted().collect(Collectors.toList());
+        assertTrue(String.valueOf(failed), failed.equals(List.of("ray.hidden.Task5HiddenTest#coordinatesOnTexelEdgesRoundAsTheCourseDoes",
+                "ray.shading.ClampTextureTest#onATexelEdgeTheCourseFlipsVBeforeRounding",
+                "ray.shading.RepeatTextureTest#onATexelEdgeTheCourseFlipsVBeforeRounding")));
+    }
+
     private static void assertEveryPoint(Variant... variants) throws Exception {
         StringBuilder unfair = new StringBuilder();
         for (Variant variant : variants) {
@@ -145,7 +162,10 @@ public class AlternativeSolutionsTest {
                 earned += o.passed() ? o.points : 0;
             }
         }
-        SUMMARY.append(String.format("%-28s %-13s %3d tests, %5.1f of %5.1f regular points, bonus %d of %d%n", variant.name,
+        SUMMARY.append(String.format("%-36s %-13s %3d tests, %5.1f of %5.1f regular points, bonus %d of %d%n", variant.name,
                 variant.correct ? "correct" : "known wrong", outcomes.size(), earned, regular, bonusPassed, bonus));
+        // Which tests it failed, so that a mistake's cost can be read test by test.
+        outcomes.stream().filter(o -> !o.passed())
+                .forEach(o -> SUMMARY.append(String.format("    fails %s (%s points)%n", o.test, o.points)));
     }
 }

@@ -64,7 +64,13 @@ public class ClampTextureTest {
         assertTexel(RULE, texture, W, H, 0.0, 0.0, 0, 2);
         assertTexel(RULE, texture, W, H, 1.0, 0.0, 3, 2);
         assertTexel(RULE, texture, W, H, 1.0, 1.0, 3, 0);
-        assertTexel(RULE, texture, W, H, 0.375, 0.5, 2, 2); // on texel edges: see RepeatTextureTest
+    }
+
+    /** Exactly on the edges between texels, as in RepeatTextureTest: flip v, then round. */
+    @Test
+    public void onATexelEdgeTheCourseFlipsVBeforeRounding() {
+        assertTexel(RULE + "; v = 0.5 lies on the edge between rows 1 and 2, and (int)((1 − 0.5)·3 + 0.5) = 2 (flip v, then"
+                + " round), not H − (int)(0.5·3 + 0.5) = 1 (round, then flip)", texture, W, H, 0.375, 0.5, 2, 2);
     }
 
     @Test

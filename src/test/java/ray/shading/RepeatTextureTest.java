@@ -65,7 +65,7 @@ public class RepeatTextureTest {
     public void theImagesEdgesWrapAsTheCourseDoes() {
         assertTexel(RULE, texture, W, H, 0.0, 0.0, 0, 0);
         assertTexel(RULE, texture, W, H, 0.5, 0.0, 2, 0);
-        assertTexel(RULE, texture, W, H, 1.0, 0.5, 0, 2); // u = 1: (int)(4.5) = column 4, wrapped to 0
+        assertTexel(RULE, texture, W, H, 1.0, 0.6, 0, 1); // u = 1: (int)(4.5) = column 4, wrapped to 0; row (int)(1.7)
         assertTexel(RULE, texture, W, H, 1.0, 1.0, 0, 0);
     }
 

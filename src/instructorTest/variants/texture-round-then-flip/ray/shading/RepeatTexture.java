@@ -3,7 +3,7 @@ package ray.shading;
 import ray.image.Image;
 import ray.math.Vec3;
 
-/** Known wrong: rounds v·H + 0.5 first and flips to H − j, which agrees with (int)((1 − v)·H + 0.5) except exactly on the edges between texel rows. */
+/** Known wrong: rounds v·H + 0.5 first and flips to H − j, so for v below 0 the cast, rounding toward zero, lands a row off, and on an edge between rows it takes the upper row where the course takes the lower. */
 public class RepeatTexture extends Texture {
     public RepeatTexture() {
     }
