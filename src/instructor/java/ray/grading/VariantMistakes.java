@@ -21,8 +21,9 @@ import ray.image.ImageDiff;
  * "Known wrong: what it does"); when a task's render tests fail, each known-wrong version of that
  * task renders the failing scenes with the solution for everything else, and a render that matches
  * the student's by the render tests' own comparison names the mistake ("Your render matches a known
- * mistake's, whose code takes the far root ..."). A correct render matches the reference, and the known
- * mistakes do not, so a correct submission never gets a name.
+ * mistake's, whose code takes the far root ..."), the closest one where several match. A correct
+ * render matches the reference, and the known mistakes do not, so a correct submission never gets a
+ * name.
  */
 final class VariantMistakes {
     static final String MATCHES = "Your render matches a known mistake's, whose code ";
@@ -64,6 +65,9 @@ final class VariantMistakes {
         if (yours.isEmpty()) {
             return names;
         }
+        // Several mistakes may each match within the render tests' tolerance (two texture lookups a
+        // texel apart in different ways both change a few edges); the closest render names it.
+        Map<String, Double> closest = new LinkedHashMap<>();
         for (Variant mistake : mistakes) {
             Path out = work.resolve(mistake.folder.getFileName().toString());
             Path renders = render(tree, mistake, sceneFiles.values().stream().distinct().collect(Collectors.toList()), classpath, out);
@@ -73,9 +77,11 @@ final class VariantMistakes {
             for (Map.Entry<String, Path> entry : yours.entrySet()) {
                 String sceneName = Path.of(sceneFiles.get(entry.getKey())).getFileName().toString().replaceFirst("\\.xml$", "");
                 Path theirs = renders.resolve(sceneName + ".png");
-                if (!names.containsKey(entry.getKey()) && Files.isRegularFile(theirs)) {
+                if (Files.isRegularFile(theirs)) {
                     BufferedImage student = ImageIO.read(entry.getValue().toFile());
-                    if (ImageDiff.compare(ImageIO.read(theirs.toFile()), student).passed()) {
+                    ImageDiff.Result diff = ImageDiff.compare(ImageIO.read(theirs.toFile()), student);
+                    if (diff.passed() && diff.meanDifference() < closest.getOrDefault(entry.getKey(), Double.POSITIVE_INFINITY)) {
+                        closest.put(entry.getKey(), diff.meanDifference());
                         names.put(entry.getKey(), MATCHES + mistake.knownWrong);
                     }
                 }

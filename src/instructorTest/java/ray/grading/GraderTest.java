@@ -216,8 +216,8 @@ public class GraderTest {
     public void anUnnormalizedNormalAndTheTextureMistakesAreNamed() throws Exception {
         for (String[] c : new String[][] {
                 {"sphere-normal-unnormalized", "Task 2 ", "SphereRenderTest.", "gives the normal as hit − center without dividing by the radius"},
-                {"texture-no-half", "Task 5 ", "TextureRenderTest.", "(int)(u·W) without + 0.5"},
-                {"texture-rows-flipped-after-rounding", "Task 5 ", "TextureRenderTest.", "flips it to H − 1 − j, one row off"}}) {
+                {"texture-no-half", "Task 5 ", "TextureRenderTest.", "rounds down with (int)(u·W) without + 0.5"},
+                {"texture-rows-flipped-after-rounding", "Task 5 ", "TextureRenderTest.", "rounds v·H + 0.5 to a row from the bottom and flips it"}}) {
             List<Map<String, Object>> tests = (List<Map<String, Object>>) grade(solutionWithVariant(c[0]), c[0]).get("tests");
             List<Map<String, Object>> failed = tests.stream()
                     .filter(t -> ((String) t.get("name")).contains(c[2]) && "failed".equals(t.get("status")))
