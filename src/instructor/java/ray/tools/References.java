@@ -1,6 +1,7 @@
 package ray.tools;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -9,13 +10,13 @@ import java.util.TreeMap;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import ray.cli.RenderCommand;
+import ray.cli.SceneWarnings;
 import ray.image.PngWriter;
 import ray.render.RenderResult;
 import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneException;
 import ray.scene.SceneFiles;
-import ray.scene.SceneLoader;
 
 /**
  * Renders the reference images: every scene under scenes/ (recursively, except scenes/reference
@@ -68,9 +69,11 @@ public final class References {
                 "Reference renders, made by gradle references. ray1 render does not write into this folder.\n",
                 StandardCharsets.UTF_8);
         Files.writeString(reference.resolve("README.md"), README, StandardCharsets.UTF_8);
+        // Each scene's warnings go to stderr, as ray1 render prints them.
+        PrintWriter warnings = new PrintWriter(System.err);
         for (Map.Entry<String, Path> entry : byName.entrySet()) {
             try {
-                Scene scene = SceneLoader.load(entry.getValue());
+                Scene scene = SceneWarnings.load(entry.getValue(), warnings);
                 RenderResult result = new Renderer(scene, 0, 0).render();
                 Path png = reference.resolve(entry.getKey() + ".png");
                 PngWriter.write(result.image, scene.getExposure(), png);

@@ -40,6 +40,17 @@ public class AccuracyCommandTest {
     }
 
     @Test
+    public void aSceneWarningGoesToStderrOnceAndTheReportIsStillWritten() throws Exception {
+        Path out = folder.getRoot().toPath().resolve("report");
+        Path scene = CliRun.write(folder.getRoot().toPath().resolve("floor.xml"), CliRun.floorScene(CliRun.UPSIDE_DOWN_BOX));
+        CliRun run = accuracy("-o", out.toString(), scene.toString());
+        assertEquals(run.toString(), 0, run.status);
+        assertEquals(run.toString(), CliRun.upsideDownBoxWarning(scene) + "\n", run.err);
+        assertEquals(run.toString(), "report: " + out.resolve("index.html") + " (1 scene)", run.out.strip());
+        run.assertNoStackTrace();
+    }
+
+    @Test
     public void aFailingSceneDoesNotStopTheOthers() throws Exception {
         Path out = folder.getRoot().toPath().resolve("report");
         Path broken = CliRun.write(folder.getRoot().toPath().resolve("broken.xml"), CliRun.BROKEN_SCENE);

@@ -96,6 +96,60 @@ public class RenderCommandTest {
         run.assertNoStackTrace();
     }
 
+    /**
+     * An 8×4 orthographic view at 45° down onto two white 2×2×2 boxes, left one given with minPt.y = 1
+     * above maxPt.y = −1. The view maps pixel column i to x = i − 3.5, and the rows from the top to
+     * t = 1.5, 0.5, −0.5, −1.5 along v = (0, 1, −1)/√2: a ray at t meets a box's front (z = 1) at
+     * y = 1 + √2·t for −√2 ≤ t ≤ 0, and its top (y = 1) at z = 1 − √2·t for 0 ≤ t ≤ √2.
+     */
+    private static final String TWO_BOXES_ONE_UPSIDE_DOWN = """
+            <scene>
+              <camera type="OrthographicCamera">
+                <viewPoint>0 5 5</viewPoint>
+                <viewDir>0 -1 -1</viewDir>
+                <viewWidth>8</viewWidth>
+                <viewHeight>4</viewHeight>
+              </camera>
+              <image>8 4</image>
+              <backColor>0.2 0.3 0.5</backColor>
+              <light><position>0 6 6</position><intensity>60 60 60</intensity></light>
+              <surface type="Box">
+                <minPt>-3 1 -1</minPt>
+                <maxPt>-1 -1 1</maxPt>
+              </surface>
+              <surface type="Box">
+                <minPt>1 -1 -1</minPt>
+                <maxPt>3 1 1</maxPt>
+              </surface>
+            </scene>
+            """;
+
+    @Test
+    public void aBoxGivenUpsideDownWarnsOnceAndRendersAsTheCoursesRendererDoes() throws Exception {
+        Path scene = CliRun.write(root.resolve("boxes.xml"), TWO_BOXES_ONE_UPSIDE_DOWN);
+        CliRun run = CliRun.of("render", "-o", output.toString(), scene.toString());
+        assertEquals(run.toString(), 0, run.status);
+        assertEquals(run.toString(), scene + ":11:23: warning: Box minPt.y > maxPt.y; built from the corners as given,"
+                + " as the course's renderer does\n", run.err);
+        assertEquals(run.toString(), 2, CliRun.lines(run.out).length);
+        BufferedImage png = PngReader.read(output.resolve("boxes.png"));
+        // Row 1 (t = 0.5) sees the tops at z = 1 − √2/2 = 0.29289, row 2 (t = −0.5) the fronts at
+        // y = 0.29289; columns 1 and 6 are x = −2.5 and 2.5. From the light at (0, 6, 6) each of these
+        // four points is (∓2.5, 5.70711, 5) or (∓2.5, 5, 5.70711) away: r² = 63.8211, and the lit
+        // face's n·l = 5/√63.8211 = 0.625876, so L = 60·0.625876/63.8211 = 0.588403, stored as
+        // floor(255·0.588403^(1/2.2) + ½) = 200.
+        int lit = 0xc8c8c8;
+        assertEquals("the ordinary box's top", lit, png.getRGB(6, 1) & 0xffffff);
+        assertEquals("the ordinary box's front", lit, png.getRGB(6, 2) & 0xffffff);
+        // The upside-down box's top is its −y face (at minPt.y = 1): its normal (0, −1, 0) points away
+        // from the light, so it is black. Its front, the +z face, still points out and is lit.
+        assertEquals("the upside-down box's top", 0x000000, png.getRGB(1, 1) & 0xffffff);
+        assertEquals("the upside-down box's front", lit, png.getRGB(1, 2) & 0xffffff);
+        // Row 3 (t = −1.5) is below both boxes: the background, floor(255·(0.2, 0.3, 0.5)^(1/2.2) + ½).
+        assertEquals(0x7b94ba, png.getRGB(1, 3) & 0xffffff);
+        run.assertNoStackTrace();
+    }
+
     @Test
     public void folderArgumentRendersEveryXmlFileRecursively() throws Exception {
         CliRun.write(root.resolve("scenes/a.xml"), CliRun.floorScene(""));

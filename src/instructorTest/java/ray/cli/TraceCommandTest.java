@@ -285,6 +285,17 @@ public class TraceCommandTest {
     }
 
     @Test
+    public void aSceneWarningGoesToStderrOnceAndTheTraceStillRuns() throws Exception {
+        Path scene = CliRun.write(folder.getRoot().toPath().resolve("floor.xml"), CliRun.floorScene(CliRun.UPSIDE_DOWN_BOX));
+        CliRun run = CliRun.of("trace", scene.toString(), "0", "2");
+        assertEquals(run.toString(), 0, run.status);
+        assertEquals(run.toString(), CliRun.upsideDownBoxWarning(scene) + "\n", run.err);
+        // Pixel (0, 2) from the top is right under the light (RenderCommandTest's floor): white.
+        assertTrue(run.out, run.out.matches("(?s).*8-bit RGB\\s+\\(255, 255, 255\\).*"));
+        run.assertNoStackTrace();
+    }
+
+    @Test
     public void missingSceneFileIsAOneLineErrorWithNonZeroStatus() {
         CliRun run = CliRun.of("trace", "scenes/no-such-scene.xml", "1", "1");
         assertNotEquals(run.toString(), 0, run.status);

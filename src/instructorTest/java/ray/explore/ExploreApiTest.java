@@ -295,6 +295,39 @@ public class ExploreApiTest {
         }
     }
 
+    @Test(timeout = 60_000)
+    public void theScenesWarningsComeFirstAmongTheNotesAfterEachRender() throws Exception {
+        Path scene = folder.getRoot().toPath().resolve("box.xml");
+        String text = """
+                <scene>
+                  <camera type="PerspectiveCamera"><viewPoint>0 0 5</viewPoint></camera>
+                  <image>8 6</image>
+                  <light><position>0 5 5</position><intensity>20 20 20</intensity></light>
+                  <surface type="Box">
+                    <minPt>-1 1 -1</minPt>
+                    <maxPt>1 -1 1</maxPt>
+                  </surface>
+                </scene>
+                """;
+        Files.writeString(scene, text);
+        String warning = scene + ":5:23: warning: Box minPt.y > maxPt.y; built from the corners as given, as the course's renderer does";
+        try (Explorer explorer = Explorer.start(scene, null, 0)) {
+            assertEquals(List.of(warning), explorer.warnings());
+            JsonObject summary = json(explorer, "api/scene", 200);
+            assertTrue(summary.get("renderError").isJsonNull());
+            assertEquals(warning, summary.getAsJsonArray("notes").get(0).getAsString());
+            // Edited to a flat box and rendered again: the page's notes say so, once.
+            Files.writeString(scene, text.replace("<maxPt>1 -1 1</maxPt>", "<maxPt>1 1 1</maxPt>"));
+            HttpResponse<String> again = HTTP.send(HttpRequest.newBuilder(URI.create(explorer.url() + "api/rerender"))
+                    .POST(HttpRequest.BodyPublishers.noBody()).build(), HttpResponse.BodyHandlers.ofString());
+            assertEquals(again.body(), 200, again.statusCode());
+            JsonArray notes = JsonParser.parseString(again.body()).getAsJsonObject().getAsJsonArray("notes");
+            assertEquals(notes.toString(), 1, notes.size());
+            assertEquals(scene + ":5:23: warning: Box minPt.y = maxPt.y (a flat box); built from the corners as given, as the"
+                    + " course's renderer does", notes.get(0).getAsString());
+        }
+    }
+
     private static String cli(String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();

@@ -196,7 +196,7 @@ public class NonFiniteSceneDataTest {
         assertRefused("radius is Infinity; expected a positive number", () -> new Sphere(v(0, 0, 0), INF));
         Box box = new Box();
         box.setMinPt(v(NAN, 0, 0));
-        assertRefused("is not below maxPt", box::complete);
+        assertRefused("minPt is (NaN, 0.0, 0.0); expected three finite numbers", box::complete);
         assertRefused("cannot be inverted (its determinant is NaN)", () -> Placement.of(Vec3.ZERO, Vec3.ZERO, v(NAN, 1, 1)).place(new Group()));
     }
 

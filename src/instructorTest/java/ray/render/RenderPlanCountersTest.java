@@ -181,6 +181,7 @@ public class RenderPlanCountersTest {
             Map.entry("one-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS)),
             Map.entry("rgb-normals", Set.of(Effect.ACCELERATION)),
             Map.entry("two-boxes", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS)),
+            Map.entry("inverted-box", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS)),
             Map.entry("wire-box-ortho", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("wire-box", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("far-from-origin", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION, Effect.TRANSFORMS)),

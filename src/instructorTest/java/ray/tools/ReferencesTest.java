@@ -5,6 +5,9 @@ import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 
 import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.Rule;
@@ -60,6 +63,26 @@ public class ReferencesTest {
         assertFalse("nothing rendered from the reference folder", Files.exists(reference.resolve("ignored.png")));
         assertTrue(Files.exists(reference.resolve(RenderCommand.REFERENCE_MARKER)));
         assertTrue(Files.readString(reference.resolve("README.md")).contains("gradle references"));
+    }
+
+    @Test
+    public void aScenesWarningGoesToStderrAndItsReferenceIsStillRendered() throws Exception {
+        Path scenes = folder.getRoot().toPath();
+        Path file = scenes.resolve("a.xml");
+        // A box given with minPt.y above maxPt.y, below the triangle and out of the light (line 6).
+        Files.writeString(file, scene("1 1 1").replace("</scene>", "  <surface type=\"Box\">\n"
+                + "    <minPt>5 5 -3</minPt><maxPt>6 4 -2</maxPt>\n  </surface>\n</scene>"));
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream original = System.err;
+        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+        try {
+            assertEquals(0, References.run(scenes));
+        } finally {
+            System.setErr(original);
+        }
+        assertEquals(file + ":6:23: warning: Box minPt.y > maxPt.y; built from the corners as given, as the course's renderer does"
+                + System.lineSeparator(), err.toString(StandardCharsets.UTF_8));
+        assertEquals(0xdbdbdb, PngReader.read(scenes.resolve("reference/a.png")).getRGB(1, 1) & 0xffffff);
     }
 
     @Test

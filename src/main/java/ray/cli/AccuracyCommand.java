@@ -19,7 +19,6 @@ import ray.accuracy.Sweeps;
 import ray.render.PixelWindow;
 import ray.scene.Scene;
 import ray.scene.SceneException;
-import ray.scene.SceneLoader;
 
 /** {@code ray1 accuracy}: the accuracy–cost study of scenes, written as a report (DIR/index.html). */
 @Command(name = "accuracy", mixinStandardHelpOptions = true,
@@ -89,7 +88,7 @@ public final class AccuracyCommand implements Callable<Integer> {
         int failures = 0;
         for (Path file : files) {
             try {
-                Scene scene = SceneLoader.load(file);
+                Scene scene = SceneWarnings.load(file, err);
                 if (part != null && !part.fitsIn(scene.getWidth(), scene.getHeight())) {
                     err.println("error: " + file + ": the window " + part + " does not fit in its " + scene.getWidth() + "x"
                             + scene.getHeight() + " image");

@@ -62,6 +62,8 @@ public final class ExploreCommand implements Callable<Integer> {
             return 1;
         }
         try (explorer) {
+            // Printed once; a re-render from the page shows the scene's warnings there, among its notes.
+            SceneWarnings.print(explorer.warnings(), err);
             out.println("ray1 explore: " + sceneFile + " at " + explorer.url() + "  (open it in a browser; Ctrl-C stops)");
             out.flush();
             // Serves until the process is stopped (Ctrl-C): nothing counts this down.

@@ -22,7 +22,6 @@ import ray.render.SamplePattern;
 import ray.scene.Scene;
 import ray.scene.SceneException;
 import ray.scene.SceneFiles;
-import ray.scene.SceneLoader;
 
 /** {@code ray1 render}: renders scenes to PNG files, per scene a line of figures and a line of its render plan. */
 @Command(name = "render", mixinStandardHelpOptions = true,
@@ -105,7 +104,7 @@ public final class RenderCommand implements Callable<Integer> {
                 continue;
             }
             try {
-                Scene scene = SceneLoader.load(file);
+                Scene scene = SceneWarnings.load(file, err);
                 if (cameraRays) {
                     writeCameraRays(scene, name, out);
                 } else {

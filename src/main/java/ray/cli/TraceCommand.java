@@ -9,7 +9,6 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import ray.scene.Scene;
 import ray.scene.SceneException;
-import ray.scene.SceneLoader;
 import ray.trace.PixelTrace;
 
 /** {@code ray1 trace}: explains how one pixel of a scene gets its color. */
@@ -49,7 +48,7 @@ public final class TraceCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Scene scene;
         try {
-            scene = SceneLoader.load(sceneFile);
+            scene = SceneWarnings.load(sceneFile, err);
         } catch (SceneException e) {
             err.println("error: " + e.getMessage());
             return 1;

@@ -69,6 +69,8 @@ final class ExploreSession {
         scene = loaded;
         renderId++;
         notes.clear();
+        // The scene's warnings (FILE:LINE:COL: warning: …) first, where the page shows its notes.
+        notes.addAll(loaded.warnings());
         render = null;
         renderPng = null;
         renderError = null;
@@ -169,6 +171,11 @@ final class ExploreSession {
         }
         SceneOutline.of(scene, s);
         return s;
+    }
+
+    /** The loaded scene's warnings, which the page shows among its notes. */
+    List<String> warnings() {
+        return scene.warnings();
     }
 
     /** The story of pixel (x, y), or null with {@code problem} when it lies outside the image. */

@@ -2,13 +2,16 @@ package ray.explore;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 
 /** A running {@code ray1 explore}: the scene loaded and rendered, and its page served. */
 public final class Explorer implements AutoCloseable {
     private final ExploreServer server;
+    private final List<String> warnings;
 
-    private Explorer(ExploreServer server) {
+    private Explorer(ExploreServer server, List<String> warnings) {
         this.server = server;
+        this.warnings = warnings;
     }
 
     /**
@@ -21,7 +24,12 @@ public final class Explorer implements AutoCloseable {
     public static Explorer start(Path sceneFile, Path reference, int port) throws IOException {
         ExploreSession session = new ExploreSession(sceneFile, reference);
         session.reload();
-        return new Explorer(ExploreServer.start(session, port));
+        return new Explorer(ExploreServer.start(session, port), session.warnings());
+    }
+
+    /** The warnings of the scene as first loaded, one located line each (ray.scene.Scene#warnings()). */
+    public List<String> warnings() {
+        return warnings;
     }
 
     public int port() {

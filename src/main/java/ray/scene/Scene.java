@@ -29,6 +29,8 @@ public class Scene {
     private final List<Shader> shaders = new ArrayList<>();
     private final List<Texture> textures = new ArrayList<>();
     private final Group surfaces = new Group();
+    /** The loader's warnings, each a located line: see {@link #warnings()}. */
+    private final List<String> warnings = new ArrayList<>();
     /** Where the primitives sit, for {@link #hitGeometry}; made when first asked for after the last surface is added. */
     private volatile Placements placements;
     /** This scene seen from a camera at the origin, made when first rendered; dropped by any change. */
@@ -113,7 +115,7 @@ public class Scene {
     }
 
     /**
-     * A scene with this one's name, image, exposure, background, samples, shaders and textures, and
+     * A scene with this one's name, image, exposure, background, samples, shaders, textures and warnings, and
      * {@code camera}, {@code lights} and {@code surfaces} (the top level, under a root with this
      * scene's root shader) for its parts; this scene is left as it was. Not completed.
      */
@@ -130,6 +132,7 @@ public class Scene {
         textures.forEach(copy::addTexture);
         copy.surfaces.setShader(this.surfaces.getShader());
         surfaces.forEach(copy::addSurface);
+        copy.warnings.addAll(warnings);
         return copy;
     }
 
@@ -215,6 +218,20 @@ public class Scene {
 
     public List<Shader> getShaders() {
         return Collections.unmodifiableList(shaders);
+    }
+
+    /**
+     * What the loader found worth a remark in the scene file though the scene loads and renders, in
+     * file order: one line each, {@code FILE:LINE:COL: warning: what}, e.g. a box given with minPt
+     * above maxPt on an axis. The commands that load a scene print each on stderr. Read-only.
+     */
+    public List<String> warnings() {
+        return Collections.unmodifiableList(warnings);
+    }
+
+    /** Adds a located warning line (not a public adder: the loader binds those to scene elements). */
+    void warn(String line) {
+        warnings.add(line);
     }
 
     /** All surfaces of the scene, as one group. */

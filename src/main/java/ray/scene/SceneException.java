@@ -42,7 +42,8 @@ public class SceneException extends RuntimeException {
         return located(shownFile, line, column, problem);
     }
 
-    private static String located(Path file, int line, int column, String problem) {
+    /** {@code FILE:LINE:COL: text}, the form of every located line (errors, and the loader's warnings). */
+    static String located(Path file, int line, int column, String problem) {
         return file + ":" + line + ":" + column + ": " + problem;
     }
 

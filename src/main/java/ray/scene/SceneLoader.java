@@ -20,6 +20,7 @@ import ray.math.Vec3;
 import ray.surface.MeshData;
 import ray.surface.Placement;
 import ray.surface.Surface;
+import ray.surface.WarnsOnLoad;
 
 /**
  * Loads the course's XML scene format by binding elements to setters: {@code <radius>} calls
@@ -34,7 +35,10 @@ import ray.surface.Surface;
  * children. Element names match case-insensitively. After an object's properties are set, its
  * {@code complete()} method, if any, checks it and may return the object to use instead.
  *
- * <p>Every error is a {@link SceneException} naming the file, line and column.
+ * <p>Every error is a {@link SceneException} naming the file, line and column. An object that
+ * loads but deserves a remark ({@link WarnsOnLoad}, e.g. a box given with minPt above maxPt) adds
+ * a warning to the scene, located in the same way: {@code FILE:LINE:COL: warning: what}
+ * ({@link Scene#warnings()}).
  */
 public final class SceneLoader {
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
@@ -44,6 +48,8 @@ public final class SceneLoader {
     private final Map<String, Object> named = new HashMap<>();
     /** The element that defined each name, for the line of the first one when a name is used twice. */
     private final Map<String, Element> namedAt = new HashMap<>();
+    /** Warnings of the completed objects, located, in the order they were completed. */
+    private final List<String> warnings = new ArrayList<>();
 
     private SceneLoader(Path file) {
         this.file = file;
@@ -68,6 +74,7 @@ public final class SceneLoader {
         } catch (IllegalArgumentException e) {
             throw error(root, e.getMessage());
         }
+        warnings.forEach(scene::warn);
         return scene;
     }
 
@@ -384,8 +391,23 @@ public final class SceneLoader {
         }
     }
 
-    /** Checks and finishes {@code object}; a surface comes back placed where its translate, rotate and scale put it. */
+    /**
+     * Checks and finishes {@code object} ({@link #finish}), then records its warnings, if it has any,
+     * at {@code element}, where an error in it would point.
+     */
     private Object complete(Element element, Object object, Placement placement) {
+        Object completed = finish(element, object, placement);
+        if (object instanceof WarnsOnLoad) {
+            int[] position = PositionalXml.position(element);
+            for (String warning : ((WarnsOnLoad) object).warnings()) {
+                warnings.add(SceneException.located(file, position[0], position[1], "warning: " + SceneException.oneLine(warning)));
+            }
+        }
+        return completed;
+    }
+
+    /** Checks and finishes {@code object}; a surface comes back placed where its translate, rotate and scale put it. */
+    private Object finish(Element element, Object object, Placement placement) {
         try {
             if (object instanceof Surface) {
                 return placement.place(((Surface) object).complete());

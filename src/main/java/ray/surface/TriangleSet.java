@@ -29,10 +29,14 @@ public abstract class TriangleSet extends Surface {
     private Triangle[] triangles = new Triangle[0];
     private Bvh bvh;
 
-    /** Replaces the triangles (by complete(), once the properties are known) and builds their hierarchy. */
+    /**
+     * Replaces the triangles (by complete(), once the properties are known) and builds their
+     * hierarchy. No triangles (a box flat on two axes) make no hierarchy, since a {@link Bvh} cannot
+     * hold an empty leaf: the set is then never hit.
+     */
     protected void setTriangles(List<Triangle> built) {
         triangles = built.toArray(new Triangle[0]);
-        bvh = BvhBuilder.build(triangles, hasTree());
+        bvh = triangles.length == 0 ? null : BvhBuilder.build(triangles, hasTree());
     }
 
     @Override
@@ -49,7 +53,7 @@ public abstract class TriangleSet extends Surface {
         return triangles.length >= LINEAR_BELOW;
     }
 
-    /** The hierarchy's node count (1 for a set searched by its box alone, 0 before the triangles are built). */
+    /** The hierarchy's node count (1 for a set searched by its box alone, 0 before the triangles are built or without any). */
     public int treeNodes() {
         return bvh == null ? 0 : bvh.nodeCount();
     }

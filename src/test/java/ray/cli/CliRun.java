@@ -69,6 +69,18 @@ final class CliRun {
                 + "</scene>\n";
     }
 
+    /**
+     * For {@link #floorScene}'s {@code extra}: a box given with minPt.y above maxPt.y, which loads
+     * with a warning at line 9, column 23 ({@link #upsideDownBoxWarning}); it lies below the floor,
+     * out of view and out of the light, so the image is the floor's alone.
+     */
+    static final String UPSIDE_DOWN_BOX = "  <surface type=\"Box\"><minPt>5 5 -3</minPt><maxPt>6 4 -2</maxPt></surface>\n";
+
+    /** The warning line of {@link #UPSIDE_DOWN_BOX} in the floor scene {@code file}. */
+    static String upsideDownBoxWarning(Path file) {
+        return file + ":9:23: warning: Box minPt.y > maxPt.y; built from the corners as given, as the course's renderer does";
+    }
+
     /** A scene whose error is on line 5: a sphere with a negative radius. */
     static final String BROKEN_SCENE = "<scene>\n"
             + "  <camera type=\"OrthographicCamera\"/>\n"

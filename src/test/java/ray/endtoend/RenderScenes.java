@@ -52,6 +52,8 @@ final class RenderScenes {
         tasks.put("mesh-smooth", StudentTask.TRIANGLE);
         tasks.put("two-boxes", StudentTask.TRIANGLE);
         tasks.put("rgb-normals", StudentTask.TRIANGLE);
+        // A box given upside down (minPt.y above maxPt.y), built as given: its top's normal points down.
+        tasks.put("inverted-box", StudentTask.TRIANGLE);
         // Task 4: overlapping surfaces, nested transformed groups, reflection rays.
         tasks.put("wire-box", StudentTask.GROUP);
         tasks.put("group-transforms", StudentTask.GROUP);
