@@ -196,20 +196,27 @@ public final class TextureGenerator {
                 } else {
                     color = rgb(70, 150, 70);
                 }
-                if (x == 0) {
-                    color = rgb(250, 230, 30);
-                } else if (x == side - 1) {
-                    color = rgb(255, 255, 255);
-                }
-                if (y == 0) {
-                    color = rgb(230, 20, 20);
-                } else if (y == side - 1) {
-                    color = rgb(20, 40, 230);
-                }
-                image.setRGB(x, y, color);
+                image.setRGB(x, y, framed(color, x, y, side));
             }
         }
         return image;
+    }
+
+    /**
+     * The one-texel frame of the flower and the ruler: left column yellow, right white, top row red
+     * and bottom blue, the rows over the corners; {@code inside} elsewhere.
+     */
+    private static int framed(int inside, int x, int y, int side) {
+        if (y == 0) {
+            return rgb(230, 20, 20);
+        }
+        if (y == side - 1) {
+            return rgb(20, 40, 230);
+        }
+        if (x == 0) {
+            return rgb(250, 230, 30);
+        }
+        return x == side - 1 ? rgb(255, 255, 255) : inside;
     }
 
     // Ruler: one texel per band, so a lookup one row or column off shows as a band of the wrong
@@ -219,17 +226,7 @@ public final class TextureGenerator {
         for (int y = 0; y < side; y++) {
             for (int x = 0; x < side; x++) {
                 int color = (x + y) % 2 == 0 ? rgb(30, 110, 40) : rgb(150, 220, 120);
-                if (x == 0) {
-                    color = rgb(250, 230, 30);
-                } else if (x == side - 1) {
-                    color = rgb(255, 255, 255);
-                }
-                if (y == 0) {
-                    color = rgb(230, 20, 20);
-                } else if (y == side - 1) {
-                    color = rgb(20, 40, 230);
-                }
-                image.setRGB(x, y, color);
+                image.setRGB(x, y, framed(color, x, y, side));
             }
         }
         return image;
