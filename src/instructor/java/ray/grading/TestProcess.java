@@ -9,6 +9,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -29,6 +30,13 @@ public final class TestProcess {
     /** Heap for the test JVM: unbounded allocation in student code fails its test, not the grader. */
     static final String HEAP = "-Xmx1g";
     private static final int MAX_RESTARTS = 100;
+    /**
+     * Turns on ray.testing.UnfinishedTasks in the test JVM: after a task's first test that never
+     * finishes, its later tests fail at once instead of each waiting out its limit.
+     */
+    static final String SKIP_AFTER_TIMEOUT = "ray1.grading.skipAfterTimeout";
+    /** The tests an earlier test JVM did not finish, for UnfinishedTasks in the next one. */
+    static final String UNFINISHED = "ray1.grading.unfinished";
     private static final Gson GSON = new Gson();
     private static final Type EVENT = new TypeToken<Map<String, Object>>() { }.getType();
 
@@ -67,7 +75,12 @@ public final class TestProcess {
     /** Where test sources live; only classes from there are tests (a main class may end in "Test" too). */
     private static final List<String> TEST_SOURCES = List.of("src/test/java", "src/instructorTest/java");
 
-    /** The test classes: every top-level *Test.java under the project's test source folders. */
+    /**
+     * The test classes: every top-level *Test.java under the project's test source folders, by name,
+     * the whole-scene render tests (*RenderTest, *RenderBonusTest) last. A loop in student code then
+     * meets a unit test's 10 s limit first, and with it ends the task's run (UnfinishedTasks), rather
+     * than a render test's 60 s.
+     */
     public List<String> testClasses() throws IOException {
         List<String> classes = new ArrayList<>();
         for (String folder : TEST_SOURCES) {
@@ -82,7 +95,7 @@ public final class TestProcess {
                         .forEach(classes::add);
             }
         }
-        classes.sort(null);
+        classes.sort(Comparator.comparing((String c) -> c.matches(".*Render(Bonus)?Test")).thenComparing(Comparator.naturalOrder()));
         return classes;
     }
 
@@ -90,7 +103,7 @@ public final class TestProcess {
     public List<TestOutcome> list(Integer task) throws IOException, InterruptedException {
         Path events = workDir.resolve("list-events.jsonl");
         Files.deleteIfExists(events);
-        launch(events, task, Set.of(), true).waitFor();
+        launch(events, task, Set.of(), true, "").waitFor();
         List<TestOutcome> tests = new ArrayList<>();
         for (Map<String, Object> e : read(events)) {
             if ("test".equals(e.get("event"))) {
@@ -109,7 +122,7 @@ public final class TestProcess {
             // A file per JVM, so that each attempt's unfinished test is told apart from earlier ones.
             Path events = workDir.resolve("events-" + attempt + ".jsonl");
             Files.deleteIfExists(events);
-            Process child = launch(events, task, skip, false);
+            Process child = launch(events, task, skip, false, unfinished(results.values()));
             boolean finished = watch(child, events);
             Map<String, Map<String, Object>> started = new LinkedHashMap<>();
             boolean done = false;
@@ -156,12 +169,31 @@ public final class TestProcess {
         throw new IllegalStateException("gave up after " + MAX_RESTARTS + " restarts of the test JVM");
     }
 
-    private Process launch(Path events, Integer task, Set<String> skip, boolean listOnly) throws IOException {
+    /**
+     * The tests that ran out of time in earlier test JVMs, as UnfinishedTasks reads them: the first
+     * per task (and per task's bonus tests), {@code TASK=test Class.method} or {@code TASK+bonus=...},
+     * a hidden one as "a hidden test".
+     */
+    static String unfinished(Iterable<TestOutcome> earlier) {
+        Map<String, String> first = new LinkedHashMap<>();
+        for (TestOutcome t : earlier) {
+            if (!t.passed() && (t.message().startsWith("stopped after ") || t.message().contains("took longer than "))) {
+                String simpleClass = t.className().substring(t.className().lastIndexOf('.') + 1);
+                String test = "hidden".equals(t.visibility()) ? "a hidden test" : "test " + simpleClass + "." + t.method();
+                first.putIfAbsent(t.task() + (t.bonus() ? "+bonus" : ""), test);
+            }
+        }
+        List<String> entries = new ArrayList<>();
+        first.forEach((key, test) -> entries.add(key + "=" + test));
+        return String.join(";", entries);
+    }
+
+    private Process launch(Path events, Integer task, Set<String> skip, boolean listOnly, String unfinished) throws IOException {
         String self = Path.of(java.net.URI.create(
                 TestRunnerMain.class.getProtectionDomain().getCodeSource().getLocation().toString())).toString();
         List<String> command = new ArrayList<>(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(), HEAP,
-                "-Djava.awt.headless=true",
+                "-Djava.awt.headless=true", "-D" + SKIP_AFTER_TIMEOUT + "=true", "-D" + UNFINISHED + "=" + unfinished,
                 "-cp", classesDir + File.pathSeparator + classpath + File.pathSeparator + self,
                 TestRunnerMain.class.getName(), events.toString()));
         if (task != null) {

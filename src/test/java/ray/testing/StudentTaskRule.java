@@ -8,7 +8,8 @@ import org.junit.runners.model.Statement;
 
 /**
  * The rule every graded test class uses: a time limit per test (an infinite loop in student code
- * costs that test only), and failure messages that say which task failed and where to work.
+ * costs that test only; when grading, it also ends its task's run, see {@link UnfinishedTasks}), and
+ * failure messages that say which task failed and where to work.
  *
  * <pre>{@code @Rule public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);}</pre>
  *
@@ -43,12 +44,20 @@ public final class StudentTaskRule implements TestRule {
 
     @Override
     public Statement apply(Statement base, Description description) {
-        String label = "[" + task.label() + (isBonus(description) ? ", bonus" : "") + "] ";
+        boolean bonus = isBonus(description);
+        String label = "[" + task.label() + (bonus ? ", bonus" : "") + "] ";
         Statement limited = Timeout.builder().withTimeout(seconds, TimeUnit.SECONDS).withLookingForStuckThread(true)
                 .build().apply(base, description);
+        // A hidden test is not named to the student, not even by its method.
+        String test = isHidden(description) ? "a hidden test" : "test " + simpleName(description) + "." + description.getMethodName();
         return new Statement() {
             @Override
             public void evaluate() throws Throwable {
+                String unfinished = UnfinishedTasks.skipBecauseOf(task, bonus);
+                if (unfinished != null) {
+                    throw new AssertionError(label + "skipped: your code did not finish in " + unfinished
+                            + ", so this task's later tests were not run; make that test finish first" + workOn());
+                }
                 try {
                     limited.evaluate();
                 } catch (NotThisTasksFault e) {
@@ -58,6 +67,7 @@ public final class StudentTaskRule implements TestRule {
                 } catch (AssertionError e) {
                     throw explained(label, e.getMessage(), e);
                 } catch (org.junit.runners.model.TestTimedOutException e) {
+                    UnfinishedTasks.didNotFinish(task, bonus, test);
                     throw explained(label, "took longer than " + seconds + " s: is there a loop that never ends?", e);
                 } catch (Exception | StackOverflowError | OutOfMemoryError e) {
                     throw explained(label, "your code threw " + e + where(e), e);
@@ -66,13 +76,29 @@ public final class StudentTaskRule implements TestRule {
         };
     }
 
+    private static String simpleName(Description description) {
+        String name = description.getClassName();
+        return name.substring(name.lastIndexOf('.') + 1);
+    }
+
     /** Whether the test's own @Points, or else its class's, marks it as a bonus test. */
     private static boolean isBonus(Description description) {
+        Points points = pointsOf(description);
+        return points != null && points.bonus();
+    }
+
+    private static boolean isHidden(Description description) {
+        Points points = pointsOf(description);
+        return points != null && points.visibility() == Visibility.HIDDEN;
+    }
+
+    /** The test's own @Points, or else its class's, or null. */
+    private static Points pointsOf(Description description) {
         Points points = description.getAnnotation(Points.class);
         if (points == null && description.getTestClass() != null) {
             points = description.getTestClass().getAnnotation(Points.class);
         }
-        return points != null && points.bonus();
+        return points;
     }
 
     /**
@@ -81,11 +107,14 @@ public final class StudentTaskRule implements TestRule {
      * for its stack trace.
      */
     private AssertionError explained(String label, String message, Throwable cause) {
-        AssertionError error = new AssertionError(label + message + "\n    Work on the TODO(Task "
-                + task.number + ") comments in " + String.join(" and ", task.files) + ".",
-                cause instanceof AssertionError ? null : cause);
+        AssertionError error = new AssertionError(label + message + workOn(), cause instanceof AssertionError ? null : cause);
         error.setStackTrace(cause.getStackTrace());
         return error;
+    }
+
+    /** The line under every failure: where to work. */
+    private String workOn() {
+        return "\n    Work on the TODO(Task " + task.number + ") comments in " + String.join(" and ", task.files) + ".";
     }
 
     /** " at Sphere.java:57" for the first frame in the project's own code, if any. */
