@@ -76,7 +76,7 @@ public final class Grader implements Callable<Integer> {
             outcomes = submission == null ? gradeInstructorTree() : gradeSubmission(output);
             // Student code can read the grading tree: nothing it quotes from the instructor's files reaches the results.
             redaction = Redaction.of(project);
-            outcomes = redaction.redact(outcomes);
+            outcomes = OutputLimits.cutMessages(redaction.redact(outcomes), OutputLimits.MESSAGE_CHARS);
             // Taken now: the render tests' pictures are in the work folder, which goes below.
             pictures = RenderFeedback.of(outcomes, work.resolve("instructor"), mistakeNames);
         } catch (Exception | Error e) {
@@ -93,10 +93,15 @@ public final class Grader implements Callable<Integer> {
         }
         double seconds = (System.nanoTime() - start) / 1e9;
         String shown = redaction.redact(output.toString());
-        Map<String, String> pages = new LinkedHashMap<>();
-        pictures.forEach((id, p) -> pages.put(id, p.html));
-        Map<String, Object> results = format == Format.prairielearn ? PrairieLearnResults.of(outcomes, shown, pictures)
-                : GradescopeResults.of(outcomes, shown, seconds, pages);
+        Map<String, RenderFeedback.Shown> feedback = pictures;
+        // Student code chooses its messages and output: the file stays within the platforms' limit.
+        Map<String, Object> results = OutputLimits.within(outcomes, shown, (cutOutcomes, cutOutput, withPictures) -> {
+            Map<String, RenderFeedback.Shown> shownPictures = withPictures ? feedback : Map.of();
+            Map<String, String> pages = new LinkedHashMap<>();
+            shownPictures.forEach((id, p) -> pages.put(id, p.html));
+            return format == Format.prairielearn ? PrairieLearnResults.of(cutOutcomes, cutOutput, shownPictures)
+                    : GradescopeResults.of(cutOutcomes, cutOutput, seconds, pages);
+        });
         writeResults(results, resultsFile);
         System.out.print(output);
         System.out.print(GradescopeResults.table(outcomes));

@@ -8,9 +8,11 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Base64;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import javax.imageio.ImageIO;
 import ray.image.ImageDiff;
 
@@ -45,18 +47,24 @@ final class RenderFeedback {
         }
     }
 
-    /** For each failed render test whose pictures exist under {@code tree}: its id → what to show. */
+    /**
+     * For each failed render test whose pictures exist under {@code tree}: its id → what to show. The
+     * first failed render of each task gets the three pictures; the others their message, the
+     * mistake's name and the trace command, since a stub handout fails 22 renders, whose pictures
+     * alone would come near the results file's limit.
+     */
     static Map<String, Shown> of(List<TestOutcome> outcomes, Path tree, Map<String, String> mistakeNames) {
         Map<String, Shown> html = new LinkedHashMap<>();
+        Set<Integer> pictured = new HashSet<>();
         for (TestOutcome t : outcomes) {
             FailedRender failed = FailedRender.of(t, tree);
             if (failed == null || !Files.isRegularFile(failed.reference)) {
                 continue;
             }
             try {
+                BufferedImage difference = Files.isRegularFile(failed.difference) ? ImageIO.read(failed.difference.toFile()) : null;
                 html.put(t.id(), page(t.message(), failed.sceneFile, ImageIO.read(failed.yours.toFile()),
-                        ImageIO.read(failed.reference.toFile()),
-                        Files.isRegularFile(failed.difference) ? ImageIO.read(failed.difference.toFile()) : null, mistakeNames.get(t.id())));
+                        ImageIO.read(failed.reference.toFile()), difference, mistakeNames.get(t.id()), pictured.add(t.task())));
             } catch (IOException | RuntimeException e) {
                 // No pictures for this test: its message alone still says what is wrong.
             }
@@ -65,27 +73,35 @@ final class RenderFeedback {
     }
 
     private static Shown page(String message, String sceneFile, BufferedImage yours, BufferedImage reference, BufferedImage difference,
-            String knownMistake) throws IOException {
+            String knownMistake, boolean withPictures) throws IOException {
         StringBuilder text = new StringBuilder();
         for (String line : message.split("\n")) {
             if (!line.strip().startsWith(REPORT_LINE)) {
                 text.append(line).append('\n');
             }
         }
-        StringBuilder html = new StringBuilder("<pre>").append(escape(text.toString().strip())).append("</pre>\n");
+        // Long lines wrap inside the box instead of running past it.
+        StringBuilder html = new StringBuilder("<pre style=\"white-space: pre-wrap\">").append(escape(text.toString().strip())).append("</pre>\n");
         // A flip or mirror has the fuller advice; the known-wrong versions' names come next.
         String flipped = KnownMistakes.of(yours, reference);
         String mistake = flipped != null ? flipped : knownMistake;
         if (mistake != null) {
             html.append("<p><strong>").append(escape(mistake)).append("</strong></p>\n");
         }
-        html.append("<p>");
         List<Map<String, Object>> images = new java.util.ArrayList<>();
-        html.append(figure(yours, "your render", images)).append(figure(reference, "the reference", images));
-        if (difference != null) {
-            html.append(figure(difference, "where they differ", images));
+        if (withPictures) {
+            // A row of pictures with a row of captions under them.
+            StringBuilder pictures = new StringBuilder("<table><tr>");
+            StringBuilder captions = new StringBuilder("<tr>");
+            figure(yours, "your render", images, pictures, captions);
+            figure(reference, "the reference", images, pictures, captions);
+            if (difference != null) {
+                figure(difference, "where they differ", images, pictures, captions);
+            }
+            html.append(pictures).append("</tr>").append(captions).append("</tr></table>\n");
+        } else {
+            html.append("<p>(Pictures are shown for the first failed render of each task only, to keep the results small.)</p>\n");
         }
-        html.append("</p>\n");
         int[] worst = worstPixel(yours, reference);
         if (worst != null) {
             html.append("<p>They differ most at pixel (").append(worst[0]).append(", ").append(worst[1])
@@ -112,10 +128,14 @@ final class RenderFeedback {
         return null;
     }
 
-    private static String figure(BufferedImage image, String caption, List<Map<String, Object>> images) throws IOException {
+    /** Adds the picture as PrairieLearn's {label, url} and as a table cell, its caption to the row below. */
+    private static void figure(BufferedImage image, String caption, List<Map<String, Object>> images, StringBuilder pictures,
+            StringBuilder captions) throws IOException {
         String url = "data:image/png;base64," + base64(shrunk(image));
         images.add(Map.of("label", caption, "url", url));
-        return "<img alt=\"" + caption + "\" title=\"" + caption + "\" src=\"" + url + "\"> ";
+        pictures.append("<td><img alt=\"").append(caption).append("\" title=\"").append(caption).append("\" src=\"").append(url)
+                .append("\"></td>");
+        captions.append("<td>").append(caption).append("</td>");
     }
 
     private static BufferedImage shrunk(BufferedImage image) {

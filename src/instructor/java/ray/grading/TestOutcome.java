@@ -13,6 +13,10 @@ package ray.grading;
 public record TestOutcome(String id, String className, String method, int task, String taskTitle, double points,
         boolean bonus, String visibility, boolean passed, String message, double seconds) {
 
+    TestOutcome withMessage(String message) {
+        return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, passed, message, seconds);
+    }
+
     TestOutcome failedWith(String why) {
         return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, false, why, seconds);
     }

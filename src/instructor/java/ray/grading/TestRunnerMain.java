@@ -214,7 +214,8 @@ public final class TestRunnerMain {
             e.put("event", "finish");
             e.put("test", id);
             e.put("passed", !failures.containsKey(id));
-            e.put("message", failures.getOrDefault(id, ""));
+            // Student code chooses its messages: a 5 MB one would make every events line, and every read of them, huge.
+            e.put("message", OutputLimits.cut(failures.getOrDefault(id, ""), OutputLimits.MESSAGE_CHARS));
             e.put("seconds", (System.nanoTime() - started.getOrDefault(id, System.nanoTime())) / 1e9);
             write(e);
             running = null;

@@ -337,6 +337,50 @@ public class GraderTest {
         }
     }
 
+    /**
+     * A sphere whose every exception carries 5.4 MB of text, on both platforms: each message is cut
+     * with "… (cut)", results.json stays under 1 MB, and the grade is the same.
+     */
+    @Test(timeout = 900_000)
+    @SuppressWarnings("unchecked")
+    public void aSubmissionThatShoutsGetsAResultsFileUnderOneMegabyte() throws Exception {
+        Path dir = FOLDER.getRoot().toPath().resolve("shouting");
+        for (String file : StudentFiles.in(PROJECT).keySet()) {
+            String source = Files.readString(PROJECT.resolve(file), StandardCharsets.UTF_8);
+            if (file.equals(SPHERE)) {
+                source = insertAfter(source, "Vec3 f = ray.origin.minus(center);\n",
+                        "        if (f != null) {\n            throw new IllegalStateException(\"shout \".repeat(900_000));\n        }\n");
+            }
+            Path copy = dir.resolve(file);
+            Files.createDirectories(copy.getParent());
+            Files.writeString(copy, source, StandardCharsets.UTF_8);
+        }
+        Map<String, Object> gradescope = grade(dir, "shouting");
+        Path prairieLearn = FOLDER.getRoot().toPath().resolve("grade-shouting-pl");
+        assertEquals(0, new CommandLine(new Grader()).execute("--project", PROJECT.toString(), "--classpath", LIBRARIES,
+                "--submission", dir.toString(), "--out", prairieLearn.toString(), "--format", "prairielearn"));
+        for (Path file : List.of(FOLDER.getRoot().toPath().resolve("grade-shouting/results.json"), prairieLearn.resolve("results.json"))) {
+            long bytes = Files.size(file);
+            assertTrue(file + ": " + bytes + " bytes", bytes <= OutputLimits.RESULTS_BYTES);
+        }
+        List<Map<String, Object>> failedSphere = ((List<Map<String, Object>>) gradescope.get("tests")).stream()
+                .filter(t -> ((String) t.get("name")).startsWith("Task 2 ") && "failed".equals(t.get("status")))
+                .collect(Collectors.toList());
+        assertTrue("the sphere's tests fail", failedSphere.size() > 10);
+        for (Map<String, Object> t : failedSphere) {
+            String output = (String) t.get("output");
+            assertTrue(t.get("name") + ": " + output.length() + " chars", output.length() < 2 * OutputLimits.MESSAGE_CHARS + 60_000);
+        }
+        assertTrue(failedSphere.stream().anyMatch(t -> ((String) t.get("output")).contains("… (cut)")));
+        // Every other task keeps its points.
+        double otherPoints = ((List<Map<String, Object>>) gradescope.get("tests")).stream()
+                .filter(t -> !((String) t.get("name")).startsWith("Task 2 ")).mapToDouble(t -> (Double) t.get("score")).sum();
+        double otherMax = ((List<Map<String, Object>>) gradescope.get("tests")).stream()
+                .filter(t -> !((String) t.get("name")).startsWith("Task 2 ") && !((List<String>) t.get("tags")).contains("bonus"))
+                .mapToDouble(t -> (Double) t.get("max_score")).sum();
+        assertTrue(otherPoints + " of " + otherMax, otherPoints >= otherMax);
+    }
+
     private static String insertAfter(String source, String anchor, String inserted) {
         int at = source.indexOf(anchor);
         assertTrue("anchor " + anchor, at >= 0);
