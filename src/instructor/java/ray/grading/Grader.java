@@ -77,6 +77,9 @@ public final class Grader implements Callable<Integer> {
             // Student code can read the grading tree: nothing it quotes from the instructor's files reaches the results.
             redaction = Redaction.of(project);
             outcomes = OutputLimits.cutMessages(redaction.redact(outcomes), OutputLimits.MESSAGE_CHARS);
+            // No path on the grading machine reaches the student: the render tests' report line names one.
+            outcomes = outcomes.stream().map(t -> t.withMessage(RenderFeedback.withoutReportLine(t.message())))
+                    .collect(java.util.stream.Collectors.toList());
             // Taken now: the render tests' pictures are in the work folder, which goes below.
             pictures = RenderFeedback.of(outcomes, work.resolve("instructor"), mistakeNames);
         } catch (Exception | Error e) {

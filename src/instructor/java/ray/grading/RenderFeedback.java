@@ -72,6 +72,23 @@ final class RenderFeedback {
         return html;
     }
 
+    /**
+     * The message without the render test's pointer to its report: a file:// address on the grading
+     * machine, in a folder deleted when grading ends, which only confuses a student who reads it.
+     */
+    static String withoutReportLine(String message) {
+        if (!message.contains(REPORT_LINE)) {
+            return message;
+        }
+        StringBuilder kept = new StringBuilder();
+        for (String line : message.split("\n", -1)) {
+            if (!line.strip().startsWith(REPORT_LINE)) {
+                kept.append(kept.length() == 0 ? "" : "\n").append(line);
+            }
+        }
+        return kept.toString();
+    }
+
     private static Shown page(String message, String sceneFile, BufferedImage yours, BufferedImage reference, BufferedImage difference,
             String knownMistake, boolean withPictures) throws IOException {
         StringBuilder text = new StringBuilder();

@@ -362,6 +362,9 @@ public class GraderTest {
         for (Path file : List.of(FOLDER.getRoot().toPath().resolve("grade-shouting/results.json"), prairieLearn.resolve("results.json"))) {
             long bytes = Files.size(file);
             assertTrue(file + ": " + bytes + " bytes", bytes <= OutputLimits.RESULTS_BYTES);
+            // The failed renders' messages no longer point at a report on the grading machine.
+            String json = Files.readString(file, StandardCharsets.UTF_8);
+            assertTrue(file + " names a file on the grading machine", !json.contains("file:") && !json.contains(FOLDER.getRoot().toString()));
         }
         List<Map<String, Object>> failedSphere = ((List<Map<String, Object>>) gradescope.get("tests")).stream()
                 .filter(t -> ((String) t.get("name")).startsWith("Task 2 ") && "failed".equals(t.get("status")))

@@ -24,4 +24,15 @@ public class RenderFeedbackTest {
     public void textIsEscapedForHtml() {
         assertEquals("a &lt;b&gt; &amp; &quot;c&quot;", RenderFeedback.escape("a <b> & \"c\""));
     }
+
+    /** The render test's pointer to its report is a file on the grading machine: no platform shows it. */
+    @Test
+    public void theReportLineIsLeftOutOfEveryMessage() {
+        String message = "[Task 2 (Sphere)] scenes/one-sphere.xml does not look like scenes/reference/one-sphere.png: max 9\n"
+                + "    See your image, the reference and where they differ in file:///tmp/work-1/instructor/build/reports/render-diff/index.html\n"
+                + "    Work on the TODO(Task 2) comments in src/main/java/ray/surface/Sphere.java.";
+        assertEquals("[Task 2 (Sphere)] scenes/one-sphere.xml does not look like scenes/reference/one-sphere.png: max 9\n"
+                + "    Work on the TODO(Task 2) comments in src/main/java/ray/surface/Sphere.java.", RenderFeedback.withoutReportLine(message));
+        assertEquals("expected:<1> but was:<2>", RenderFeedback.withoutReportLine("expected:<1> but was:<2>"));
+    }
 }
