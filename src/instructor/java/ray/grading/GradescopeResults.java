@@ -77,8 +77,12 @@ public final class GradescopeResults {
 
     /** Writes the JSON atomically: an autograder that is stopped never leaves half a file. */
     public static void write(Map<String, Object> results, Path file) throws IOException {
-        String json = new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(results);
-        ReadableFiles.writeAtomically(file, json + "\n");
+        ReadableFiles.writeAtomically(file, json(results));
+    }
+
+    /** The file's text, as {@link #write} writes it. */
+    static String json(Map<String, Object> results) {
+        return new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(results) + "\n";
     }
 
     /**

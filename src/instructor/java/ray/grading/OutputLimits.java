@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
-import com.google.gson.GsonBuilder;
 
 /**
  * Bounds on what a submission can make the results file carry: student code chooses its exception
@@ -46,8 +45,7 @@ final class OutputLimits {
 
     /** The size of the results as written (GradescopeResults.write's JSON, UTF-8). */
     static int bytes(Map<String, Object> results) {
-        return new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(results)
-                .getBytes(StandardCharsets.UTF_8).length + 1;
+        return GradescopeResults.json(results).getBytes(StandardCharsets.UTF_8).length;
     }
 
     /** Builds the results of these outcomes and output, with or without pictures. */

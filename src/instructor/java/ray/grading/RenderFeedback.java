@@ -91,14 +91,9 @@ final class RenderFeedback {
 
     private static Shown page(String message, String sceneFile, BufferedImage yours, BufferedImage reference, BufferedImage difference,
             String knownMistake, boolean withPictures) throws IOException {
-        StringBuilder text = new StringBuilder();
-        for (String line : message.split("\n")) {
-            if (!line.strip().startsWith(REPORT_LINE)) {
-                text.append(line).append('\n');
-            }
-        }
         // Long lines wrap inside the box instead of running past it.
-        StringBuilder html = new StringBuilder("<pre style=\"white-space: pre-wrap\">").append(escape(text.toString().strip())).append("</pre>\n");
+        StringBuilder html = new StringBuilder("<pre style=\"white-space: pre-wrap\">").append(escape(withoutReportLine(message).strip()))
+                .append("</pre>\n");
         // A flip or mirror has the fuller advice; the known-wrong versions' names come next.
         String flipped = KnownMistakes.of(yours, reference);
         String mistake = flipped != null ? flipped : knownMistake;
