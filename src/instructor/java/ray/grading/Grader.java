@@ -53,18 +53,33 @@ public final class Grader implements Callable<Integer> {
     @Option(names = "--format", description = "results.json for ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}).")
     Format format = Format.gradescope;
 
+    @Option(names = "--time-limit", description = "Seconds for the whole grade; tests not finished by then fail and the"
+            + " points earned so far count (0: no limit; run_autograder and PrairieLearn's run set one below the platform's).")
+    int timeLimitSeconds;
+
+    @Option(names = "--no-isolation", negatable = false, description = "Run student code as the grader's own user even as root.")
+    boolean noIsolation;
+
     public static void main(String[] args) {
         System.exit(new CommandLine(new Grader()).execute(args));
     }
 
     /** This run's own work folder under {@code out}. */
     private Path work;
+    /** Where, and as whom, the test JVMs run (Sandbox); made with the work folder. */
+    private Sandbox sandbox;
     /** Known mistakes that make a failed render test's image, by test id (VariantMistakes). */
     private final Map<String, String> mistakeNames = new LinkedHashMap<>();
+
+    /** System.nanoTime when the grade must stop (--time-limit). */
+    private long deadline = Long.MAX_VALUE;
 
     @Override
     public Integer call() throws Exception {
         long start = System.nanoTime();
+        if (timeLimitSeconds > 0) {
+            deadline = start + java.util.concurrent.TimeUnit.SECONDS.toNanos(timeLimitSeconds);
+        }
         StringBuilder output = new StringBuilder();
         List<TestOutcome> outcomes;
         Map<String, RenderFeedback.Shown> pictures;
@@ -73,7 +88,13 @@ public final class Grader implements Callable<Integer> {
         try {
             Files.createDirectories(out);
             work = Files.createTempDirectory(out, "work-");
+            sandbox = Sandbox.create(project, !noIsolation);
+            if (sandbox.warning() != null) {
+                System.err.println("warning: " + sandbox.warning());
+            }
             outcomes = submission == null ? gradeInstructorTree() : gradeSubmission(output);
+            // Nothing the student's code started may still be running when the results are written.
+            sandbox.endStrayProcesses();
             // Student code can read the grading tree: nothing it quotes from the instructor's files reaches the results.
             redaction = Redaction.of(project);
             outcomes = OutputLimits.cutMessages(redaction.redact(outcomes), OutputLimits.MESSAGE_CHARS);
@@ -81,7 +102,7 @@ public final class Grader implements Callable<Integer> {
             outcomes = outcomes.stream().map(t -> t.withMessage(RenderFeedback.withoutReportLine(t.message())))
                     .collect(java.util.stream.Collectors.toList());
             // Taken now: the render tests' pictures are in the work folder, which goes below.
-            pictures = RenderFeedback.of(outcomes, work.resolve("instructor"), mistakeNames);
+            pictures = RenderFeedback.of(outcomes, sandbox.tree(), mistakeNames);
         } catch (Exception | Error e) {
             // Whatever went wrong, the platform reads a result: 0 points and why, not an earlier student's file.
             String why = "The autograder could not grade this submission: " + (e.getMessage() == null ? e.toString() : e.getMessage());
@@ -90,6 +111,9 @@ public final class Grader implements Callable<Integer> {
             System.err.println("error: " + why);
             return 1;
         } finally {
+            if (sandbox != null) {
+                sandbox.close();
+            }
             if (work != null) {
                 ProjectTree.deleteRecursively(work);
             }
@@ -113,19 +137,27 @@ public final class Grader implements Callable<Integer> {
                 System.out.println("FAILED " + t.id() + ": " + t.message().lines().findFirst().orElse(""));
             }
         }
-        System.out.println("results: " + resultsFile);
+        // The file that outlives this run: the platform's copy when there is one (--out may be a folder deleted afterwards).
+        System.out.println("results: " + (resultsCopy != null ? resultsCopy : resultsFile));
         return 0;
     }
 
+    /**
+     * Writes the results (atomically: a reader never sees half a file) and reads each file back: what
+     * the platform reads must be what the grader wrote, not a file some leftover process put there.
+     */
     private void writeResults(Map<String, Object> results, Path resultsFile) throws IOException {
-        GradescopeResults.write(results, resultsFile);
-        if (resultsCopy != null) {
-            GradescopeResults.write(results, resultsCopy);
+        String expected = GradescopeResults.json(results);
+        for (Path file : resultsCopy == null ? List.of(resultsFile) : List.of(resultsFile, resultsCopy)) {
+            GradescopeResults.write(results, file);
+            if (!Files.readString(file, StandardCharsets.UTF_8).equals(expected)) {
+                throw new IOException(file + " changed after the grader wrote it: something else writes there");
+            }
         }
     }
 
     private List<TestOutcome> gradeInstructorTree() throws IOException, InterruptedException {
-        return tests(instructorTree()).run(null);
+        return timed(tests(instructorTree()).inSandbox(sandbox)).run(null);
     }
 
     private List<TestOutcome> gradeSubmission(StringBuilder output) throws IOException, InterruptedException {
@@ -147,6 +179,10 @@ public final class Grader implements Callable<Integer> {
         Path instructor = instructorTree();
         List<TestOutcome> outcomes = new ArrayList<>();
         for (int task : new TreeSet<>(studentFiles.values())) {
+            if (System.nanoTime() > deadline) {
+                outcomes.addAll(allFailed(task, pastDeadline()));
+                continue;
+            }
             Map<String, Path> taskFiles = new LinkedHashMap<>();
             overlay.forEach((path, file) -> {
                 if (studentFiles.get(path) == task) {
@@ -172,7 +208,8 @@ public final class Grader implements Callable<Integer> {
                 output.append(why).append('\n');
                 outcomes.addAll(allFailed(task, why));
             } else {
-                TestProcess tests = new TestProcess(instructor, taskDir.resolve("classes"), againstInstructor, taskDir.resolve("test-run"));
+                TestProcess tests = timed(new TestProcess(instructor, taskDir.resolve("classes"), againstInstructor,
+                        taskDir.resolve("test-run")).inSandbox(sandbox));
                 List<TestOutcome> taskOutcomes = runOrFail(tests, task);
                 outcomes.addAll(taskOutcomes);
                 nameMistakes(instructor, task, taskOutcomes, studentFiles, againstInstructor, taskDir.resolve("mistakes"));
@@ -189,17 +226,29 @@ public final class Grader implements Callable<Integer> {
             String againstInstructor, Path mistakesWork) {
         List<TestOutcome> failedRenders = taskOutcomes.stream()
                 .filter(t -> !t.passed() && t.className().startsWith("ray.endtoend.")).collect(java.util.stream.Collectors.toList());
-        if (failedRenders.isEmpty()) {
+        if (failedRenders.isEmpty() || System.nanoTime() > deadline) {
             return;
         }
         try {
-            mistakeNames.putAll(VariantMistakes.named(instructor, failedRenders,
+            mistakeNames.putAll(VariantMistakes.named(instructor, sandbox.tree(), failedRenders,
                     VariantMistakes.of(instructor, task, studentFiles), againstInstructor, mistakesWork));
         } catch (IOException | RuntimeException e) {
             // The feedback goes without a name; the grade is unchanged.
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+    }
+
+    /** The tests, stopped at this grade's deadline. */
+    private TestProcess timed(TestProcess tests) {
+        return tests.withDeadline(deadline, pastDeadline());
+    }
+
+    /** What a test not finished by the deadline says. */
+    private String pastDeadline() {
+        return "not run: grading stopped at its time limit of " + timeLimitSeconds + " s, before this test finished;"
+                + " the points of the tests before it count. (Do some tests take many seconds each? A correct"
+                + " submission is graded in well under a minute.)";
     }
 
     /** The task's tests, or all of them failed with the reason when the test JVM cannot run them at all. */
@@ -228,7 +277,7 @@ public final class Grader implements Callable<Integer> {
     private List<TestOutcome> allFailed(Integer task, String why) throws IOException, InterruptedException {
         Path tree = instructorTree();
         List<TestOutcome> failed = new ArrayList<>();
-        for (TestOutcome t : tests(tree).list(task)) {
+        for (TestOutcome t : tests(tree).inSandbox(sandbox).list(task)) {
             failed.add(t.failedWith(why));
         }
         return failed;

@@ -13,9 +13,10 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 /**
- * Keeps the grader's own files out of what a student sees. Student code runs inside the grading
- * tree and can read any file there, so a submission could throw the text of a hidden test or of the
- * solution as an exception's message, which a failure report would then quote. Every line of a
+ * Keeps the grader's own files out of what a student sees. Isolated ({@link Sandbox}), student code
+ * cannot read them at all; without isolation (a grader not running as root) it can, so a submission
+ * could throw the text of a hidden test or of the solution as an exception's message, which a
+ * failure report would then quote. Every line of a
  * result that quotes a line found only in the instructor's files (src/instructor, src/instructorTest,
  * and the solution blocks of the student files) has that quotation replaced; lines the handout ships too (an
  * import, a closing brace) are common knowledge and stay, as do lines too short to identify anything.

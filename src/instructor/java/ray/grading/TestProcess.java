@@ -46,6 +46,15 @@ public final class TestProcess {
     private final Path workDir;
     private int hardLimitSeconds = HARD_LIMIT_SECONDS;
     private boolean includeUngraded;
+    /** When (System.nanoTime) the whole grade must stop, and what its unfinished tests then say. */
+    private long deadline = Long.MAX_VALUE;
+    private String pastDeadline;
+    /** Set when watching stopped a test JVM at the deadline. */
+    private boolean deadlineReached;
+    /** Where and as whom the test JVM runs student code; null for the instructor's own trees (classes on the class path). */
+    private Sandbox sandbox;
+    /** The test JVMs started so far, for naming each one's events file apart. */
+    private static final java.util.concurrent.atomic.AtomicLong LAUNCHES = new java.util.concurrent.atomic.AtomicLong();
 
     /**
      * @param projectDir the project tree, the tests' working folder (so that scenes/ resolves)
@@ -60,9 +69,28 @@ public final class TestProcess {
         this.workDir = workDir;
     }
 
+    /**
+     * Stops at {@code nanoTime} (System.nanoTime): the test JVM is ended, and every test of the run
+     * not finished by then fails with {@code why}, so the points earned so far still count.
+     */
+    TestProcess withDeadline(long nanoTime, String why) {
+        this.deadline = nanoTime;
+        this.pastDeadline = why;
+        return this;
+    }
+
     /** For tests of the grader itself: a shorter backstop. */
     TestProcess withHardLimitSeconds(int seconds) {
         this.hardLimitSeconds = seconds;
+        return this;
+    }
+
+    /**
+     * Runs the test JVMs in {@code sandbox}: its working folder, as its user, with the classes handed
+     * over in memory rather than on a class path the student's code could read.
+     */
+    TestProcess inSandbox(Sandbox sandbox) {
+        this.sandbox = sandbox;
         return this;
     }
 
@@ -101,9 +129,8 @@ public final class TestProcess {
 
     /** The graded tests the classes hold (for task {@code task}, or all when null), without running them. */
     public List<TestOutcome> list(Integer task) throws IOException, InterruptedException {
-        Path events = workDir.resolve("list-events.jsonl");
-        Files.deleteIfExists(events);
-        launch(events, task, Set.of(), true, "").waitFor();
+        Path events = eventsFile("list");
+        watch(launch(events, task, Set.of(), true, ""), events);
         List<TestOutcome> tests = new ArrayList<>();
         for (Map<String, Object> e : read(events)) {
             if ("test".equals(e.get("event"))) {
@@ -119,9 +146,11 @@ public final class TestProcess {
         Map<String, TestOutcome> results = new LinkedHashMap<>();
         Set<String> skip = new LinkedHashSet<>();
         for (int attempt = 0; attempt <= MAX_RESTARTS; attempt++) {
+            if (System.nanoTime() > deadline) {
+                return stoppedAtDeadline(task, results);
+            }
             // A file per JVM, so that each attempt's unfinished test is told apart from earlier ones.
-            Path events = workDir.resolve("events-" + attempt + ".jsonl");
-            Files.deleteIfExists(events);
+            Path events = eventsFile(String.valueOf(attempt));
             Process child = launch(events, task, skip, false, unfinished(results.values()));
             boolean finished = watch(child, events);
             Map<String, Map<String, Object>> started = new LinkedHashMap<>();
@@ -153,6 +182,9 @@ public final class TestProcess {
             if (done) {
                 return new ArrayList<>(results.values());
             }
+            if (deadlineReached) {
+                return stoppedAtDeadline(task, results);
+            }
             // The JVM ended (or was stopped) during the one test that started without finishing.
             for (Map.Entry<String, Map<String, Object>> open : started.entrySet()) {
                 String why = !finished ? "stopped after " + hardLimitSeconds + " s: the test never finished (an infinite loop?)"
@@ -167,6 +199,26 @@ public final class TestProcess {
             skip.addAll(results.keySet());
         }
         throw new IllegalStateException("gave up after " + MAX_RESTARTS + " restarts of the test JVM");
+    }
+
+    /**
+     * The outcomes when the deadline came: those finished, then every other test of the run (the one
+     * running, and those never started) failed with the deadline's reason, in the listed order.
+     */
+    private List<TestOutcome> stoppedAtDeadline(Integer task, Map<String, TestOutcome> results) throws IOException, InterruptedException {
+        long deadlineWas = deadline;
+        deadline = Long.MAX_VALUE;
+        try {
+            List<TestOutcome> all = new ArrayList<>(results.values());
+            for (TestOutcome t : list(task)) {
+                if (!results.containsKey(t.id())) {
+                    all.add(t.failedWith(pastDeadline));
+                }
+            }
+            return all;
+        } finally {
+            deadline = deadlineWas;
+        }
     }
 
     /**
@@ -188,14 +240,26 @@ public final class TestProcess {
         return String.join(";", entries);
     }
 
+    /**
+     * A new events file for one test JVM: in the sandbox's run folder (the JVM's user writes it) or
+     * the work folder, named apart from every other JVM's.
+     */
+    private Path eventsFile(String attempt) throws IOException {
+        Path folder = sandbox == null ? workDir : sandbox.runFolder();
+        Path events = folder.resolve("events-" + LAUNCHES.incrementAndGet() + "-" + attempt + ".jsonl");
+        Files.deleteIfExists(events);
+        return events;
+    }
+
     private Process launch(Path events, Integer task, Set<String> skip, boolean listOnly, String unfinished) throws IOException {
         String self = Path.of(java.net.URI.create(
                 TestRunnerMain.class.getProtectionDomain().getCodeSource().getLocation().toString())).toString();
-        List<String> command = new ArrayList<>(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(), HEAP,
-                "-Djava.awt.headless=true", "-D" + SKIP_AFTER_TIMEOUT + "=true", "-D" + UNFINISHED + "=" + unfinished,
-                "-cp", classesDir + File.pathSeparator + classpath + File.pathSeparator + self,
-                TestRunnerMain.class.getName(), events.toString()));
+        String fullClasspath = classesDir + File.pathSeparator + classpath + File.pathSeparator + self;
+        List<String> options = List.of(HEAP, "-Djava.awt.headless=true", "-D" + SKIP_AFTER_TIMEOUT + "=true",
+                "-D" + UNFINISHED + "=" + unfinished);
+        List<String> command = new ArrayList<>(options);
+        command.add(0, Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.addAll(List.of("-cp", fullClasspath, TestRunnerMain.class.getName(), events.toString()));
         if (task != null) {
             command.add("--task");
             command.add(task.toString());
@@ -213,16 +277,57 @@ public final class TestProcess {
         command.addAll(testClasses());
         Path output = workDir.resolve("test-output.txt");
         Files.createDirectories(workDir);
-        // Tests run in the tree's folder, so that relative paths such as scenes/ resolve there.
-        return new ProcessBuilder(command).directory(projectDir.toFile()).redirectErrorStream(true)
-                .redirectOutput(ProcessBuilder.Redirect.appendTo(output.toFile())).start();
+        if (sandbox == null) {
+            // Tests run in the tree's folder, so that relative paths such as scenes/ resolve there.
+            return new ProcessBuilder(command).directory(projectDir.toFile()).redirectErrorStream(true)
+                    .redirectOutput(ProcessBuilder.Redirect.appendTo(output.toFile())).start();
+        }
+        int main = command.indexOf(TestRunnerMain.class.getName());
+        ProcessBuilder builder = new ProcessBuilder(sandbox.command(options, fullClasspath, TestRunnerMain.class.getName(),
+                command.subList(main + 1, command.size()))).directory(sandbox.tree().toFile()).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.appendTo(output.toFile()));
+        sandbox.environment(builder.environment());
+        Process child = builder.start();
+        sandbox.started(child);
+        // The classes go through the pipe while the JVM reads them; a JVM that dies early just closes it.
+        Thread feeder = new Thread(() -> {
+            try (java.io.OutputStream in = child.getOutputStream()) {
+                Sandbox.writeClasses(fullClasspath, in);
+            } catch (IOException e) {
+                // The JVM ended before it read everything: its exit is reported as for any crash.
+            }
+        }, "ray1-class-feeder");
+        feeder.setDaemon(true);
+        feeder.start();
+        return child;
     }
 
     /** Waits for the child, stopping it when one test runs past the hard limit; false when it had to be stopped. */
     private boolean watch(Process child, Path events) throws IOException, InterruptedException {
+        try {
+            return watchUntilEnd(child, events);
+        } finally {
+            if (sandbox != null) {
+                sandbox.ended(child);
+                // Nothing the tests started outlives them: the next JVM, and the results, come after.
+                sandbox.endStrayProcesses();
+            }
+        }
+    }
+
+    private boolean watchUntilEnd(Process child, Path events) throws IOException, InterruptedException {
+        deadlineReached = false;
         long sizeSeen = -1;
         long lastProgress = System.nanoTime();
         while (!child.waitFor(200, TimeUnit.MILLISECONDS)) {
+            if (sandbox != null) {
+                sandbox.watch(child);
+            }
+            if (System.nanoTime() > deadline) {
+                child.destroyForcibly().waitFor();
+                deadlineReached = true;
+                return false;
+            }
             // The events file grows by a line per test started or finished: its size is the progress.
             long size = Files.exists(events) ? Files.size(events) : 0;
             if (size != sizeSeen) {

@@ -199,7 +199,7 @@ public final class TestRunnerMain {
 
         @Override
         public void testFailure(Failure failure) {
-            failures.put(idOf(failure.getDescription()), explain(failure.getException()));
+            failures.put(idOf(failure.getDescription()), explain(failure.getException(), grading(failure.getDescription())));
         }
 
         @Override
@@ -222,18 +222,47 @@ public final class TestRunnerMain {
         }
     }
 
-    /** The failure's message and where in the project's code it happened (a few frames, not the whole trace). */
-    static String explain(Throwable t) {
-        // An assertion's message says it all; any other throwable also needs its class ("OutOfMemoryError: ...").
-        StringBuilder s = new StringBuilder(t instanceof AssertionError && t.getMessage() != null ? t.getMessage() : t.toString());
+    /**
+     * The failure's message and where in the project's code it happened (a few frames, not the whole
+     * trace). What escaped the test's own rule (an error while JUnit made the test class, such as a
+     * student's static initializer running out of memory) is named as the rule would name it, under
+     * the test's task ({@code grading}, null for an ungraded test).
+     */
+    static String explain(Throwable t, Map<String, Object> grading) {
+        String message;
+        if (t instanceof AssertionError && t.getMessage() != null) {
+            // An assertion's message says it all.
+            message = t.getMessage();
+        } else if (grading != null && ((Number) grading.get("task")).intValue() > 0) {
+            message = "[Task " + ((Number) grading.get("task")).intValue() + " (" + grading.get("title") + ")"
+                    + (Boolean.TRUE.equals(grading.get("bonus")) ? ", bonus" : "") + "] " + studentWords(t);
+        } else {
+            // Any other throwable also needs its class ("OutOfMemoryError: ...").
+            message = t.toString();
+        }
+        StringBuilder s = new StringBuilder(message);
         int frames = 0;
         for (StackTraceElement f : t.getStackTrace()) {
             String c = f.getClassName();
-            if (c.startsWith("ray.") && !c.startsWith("ray.testing.") && !c.startsWith("ray.grading.") && frames < 6) {
-                s.append("\n    at ").append(f);
+            // The test harness, the grader and the hidden tests are no business of the student's.
+            if (c.startsWith("ray.") && !c.startsWith("ray.testing.") && !c.startsWith("ray.grading.") && !c.startsWith("ray.hidden.")
+                    && frames < 6) {
+                // Class, method, file and line; not the class loader's or module's name before them.
+                s.append("\n    at ").append(c).append('.').append(f.getMethodName()).append('(').append(f.getFileName())
+                        .append(':').append(f.getLineNumber()).append(')');
                 frames++;
             }
         }
         return s.toString();
+    }
+
+    /** The tests' own words for what student code threw (ray.testing.StudentTaskRule, in the test classes). */
+    private static String studentWords(Throwable t) {
+        try {
+            return (String) Class.forName("ray.testing.StudentTaskRule", true, Thread.currentThread().getContextClassLoader())
+                    .getMethod("whatWentWrong", Throwable.class).invoke(null, t);
+        } catch (ReflectiveOperationException | LinkageError | RuntimeException e) {
+            return "your code threw " + t;
+        }
     }
 }

@@ -50,12 +50,12 @@ final class VariantMistakes {
      *
      * @param classpath the instructor's classes and the libraries, for compiling and rendering the mistakes
      */
-    static Map<String, String> named(Path tree, List<TestOutcome> failed, List<Variant> mistakes, String classpath, Path work)
-            throws IOException, InterruptedException {
+    static Map<String, String> named(Path tree, Path testsRanIn, List<TestOutcome> failed, List<Variant> mistakes, String classpath,
+            Path work) throws IOException, InterruptedException {
         Map<String, Path> yours = new LinkedHashMap<>();
         Map<String, String> sceneFiles = new LinkedHashMap<>();
         for (TestOutcome t : failed) {
-            FailedRender render = FailedRender.of(t, tree);
+            FailedRender render = FailedRender.of(t, testsRanIn);
             if (render != null) {
                 yours.put(t.id(), render.yours);
                 sceneFiles.put(t.id(), render.sceneFile);

@@ -329,7 +329,7 @@ public class GraderTest {
         }
         assertTrue(failures.get(1), failures.get(1).contains("your code threw java.lang.IllegalStateException: a student's bug"
                 + " at OrthographicCamera.java:"));
-        assertTrue(failures.get(2), failures.get(2).contains("your code threw java.lang.OutOfMemoryError"));
+        assertTrue(failures.get(2), failures.get(2).contains("your code ran out of memory (java.lang.OutOfMemoryError"));
         assertTrue(failures.get(3), failures.get(3).contains("NaN"));
         assertTrue(failures.get(4), failures.get(4).contains("took longer than 10 s: is there a loop that never ends?"));
         for (int task = 1; task <= 4; task++) {

@@ -48,12 +48,12 @@ public class NothingLeaksTest {
             String source = Files.readString(PROJECT.resolve(file), StandardCharsets.UTF_8);
             if (file.equals(GROUP)) {
                 source = source.replace("Ray closestSoFar = ray.copy();", "if (surfaces.size() >= 0) { try { throw new IllegalStateException("
-                        + "java.nio.file.Files.readString(java.nio.file.Path.of(\"" + HIDDEN + "\"))); }"
+                        + "java.nio.file.Files.readString(java.nio.file.Path.of(\"" + PROJECT.toAbsolutePath().resolve(HIDDEN) + "\"))); }"
                         + " catch (java.io.IOException e) { throw new java.io.UncheckedIOException(e); } }\n"
                         + "        Ray closestSoFar = ray.copy();");
             } else if (file.equals(SPHERE)) {
                 source = source.replace("Vec3 d = ray.direction;", "try { System.out.println(java.nio.file.Files.readString("
-                        + "java.nio.file.Path.of(\"src/main/java/ray/camera/PerspectiveCamera.java\"))); }"
+                        + "java.nio.file.Path.of(\"" + PROJECT.toAbsolutePath().resolve("src/main/java/ray/camera/PerspectiveCamera.java") + "\"))); }"
                         + " catch (java.io.IOException e) { }\n        Vec3 d = ray.direction;");
             }
             Files.writeString(submission.resolve(Path.of(file).getFileName().toString()), source, StandardCharsets.UTF_8);
@@ -61,8 +61,10 @@ public class NothingLeaksTest {
         Path out = FOLDER.getRoot().toPath().resolve("out");
         String libraries = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
                 .filter(p -> p.endsWith(".jar")).collect(Collectors.joining(File.pathSeparator));
+        // Without isolation (as an instructor's own `gradle grade` runs), so that the files can be read and
+        // it is the redaction that keeps them out; isolated, they cannot be read at all (AdversarialSubmissionsTest).
         int status = new CommandLine(new Grader()).execute("--project", PROJECT.toString(), "--classpath", libraries,
-                "--submission", submission.toString(), "--out", out.toString());
+                "--submission", submission.toString(), "--out", out.toString(), "--no-isolation");
         assertEquals(0, status);
         String results = Files.readString(out.resolve("results.json"), StandardCharsets.UTF_8);
         assertTrue("the group's failures are reported", results.contains("IllegalStateException"));

@@ -103,6 +103,7 @@ public final class SceneLoader {
                 if (cause instanceof SceneException) {
                     throw (SceneException) cause;
                 }
+                rethrowIfNotAboutTheScene(cause);
                 throw error(property, refusal(property, propertyName(setter), cause));
             } catch (IllegalAccessException e) {
                 throw error(property, "cannot set <" + property.getTagName() + "> (" + e.getMessage() + ")");
@@ -324,6 +325,7 @@ public final class SceneLoader {
         try {
             object = type.getConstructor().newInstance();
         } catch (InvocationTargetException e) {
+            rethrowIfNotAboutTheScene(e.getCause());
             // A bug in the class rather than in the scene: say what the constructor threw.
             throw error(element, "cannot create " + article(type.getSimpleName()) + type.getSimpleName()
                     + ": its constructor threw " + e.getCause());
@@ -407,6 +409,19 @@ public final class SceneLoader {
     }
 
     /** Checks and finishes {@code object}; a surface comes back placed where its translate, rotate and scale put it. */
+    /**
+     * Running out of memory or stack, or a class that failed to initialize, says nothing about the
+     * scene file: such errors go on as they are, to be named for what they are, never as "invalid <tag>".
+     */
+    private static void rethrowIfNotAboutTheScene(Throwable cause) {
+        if (cause instanceof VirtualMachineError) {
+            throw (VirtualMachineError) cause;
+        }
+        if (cause instanceof LinkageError) {
+            throw (LinkageError) cause;
+        }
+    }
+
     private Object finish(Element element, Object object, Placement placement) {
         try {
             if (object instanceof Surface) {

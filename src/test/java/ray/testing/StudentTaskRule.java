@@ -69,8 +69,8 @@ public final class StudentTaskRule implements TestRule {
                 } catch (org.junit.runners.model.TestTimedOutException e) {
                     UnfinishedTasks.didNotFinish(task, bonus, test);
                     throw explained(label, "took longer than " + seconds + " s: is there a loop that never ends?", e);
-                } catch (Exception | StackOverflowError | OutOfMemoryError e) {
-                    throw explained(label, "your code threw " + e + where(e), e);
+                } catch (Exception | VirtualMachineError | LinkageError e) {
+                    throw explained(label, whatWentWrong(e), e);
                 }
             }
         };
@@ -117,10 +117,38 @@ public final class StudentTaskRule implements TestRule {
         return "\n    Work on the TODO(Task " + task.number + ") comments in " + String.join(" and ", task.files) + ".";
     }
 
+    /**
+     * What the code did, named as what it is: running out of memory or stack and a class that could
+     * not be set up are not ordinary exceptions, and a student should not have to decode them.
+     */
+    public static String whatWentWrong(Throwable e) {
+        if (e instanceof OutOfMemoryError) {
+            return "your code ran out of memory (" + e + ")" + where(e)
+                    + ": does it keep allocating, say a list that grows in a loop or a huge array?";
+        }
+        if (e instanceof StackOverflowError) {
+            return "your code ran out of stack (StackOverflowError)" + where(e) + ": does a method call itself without end?";
+        }
+        if (e instanceof ExceptionInInitializerError) {
+            Throwable cause = e.getCause() == null ? e : e.getCause();
+            return "a static initializer in your code threw " + cause + where(cause);
+        }
+        if (e instanceof NoClassDefFoundError && String.valueOf(e.getMessage()).startsWith("Could not initialize class")) {
+            return "your class " + e.getMessage().substring("Could not initialize class ".length())
+                    + " cannot be used: its static initializer failed in an earlier test (see that test's message)";
+        }
+        if (e instanceof VirtualMachineError) {
+            return "the Java VM gave up running your code (" + e + ")" + where(e);
+        }
+        return "your code threw " + e + where(e);
+    }
+
     /** " at Sphere.java:57" for the first frame in the project's own code, if any. */
     private static String where(Throwable e) {
         for (StackTraceElement frame : e.getStackTrace()) {
-            if (frame.getClassName().startsWith("ray.") && !frame.getClassName().startsWith("ray.testing.")) {
+            // The test harness, the grader and the hidden tests are not the student's code.
+            String c = frame.getClassName();
+            if (c.startsWith("ray.") && !c.startsWith("ray.testing.") && !c.startsWith("ray.grading.") && !c.startsWith("ray.hidden.")) {
                 return " at " + frame.getFileName() + ":" + frame.getLineNumber();
             }
         }
