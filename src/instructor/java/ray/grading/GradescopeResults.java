@@ -17,10 +17,11 @@ import java.util.TreeMap;
  * {@code tags} and {@code visibility}.
  *
  * <p>A bonus test ({@code @Points(..., bonus = true)}) is extra credit: its entry has
- * {@code max_score} 0 and {@code score} = its points when it passed (0 when it failed), a
- * {@code "bonus"} tag and " (bonus)" after its name. The total {@code max_score} counts only the
- * regular tests' points, and the total {@code score} counts every point earned, bonus included, so a
- * submission can score above the maximum: Gradescope shows a score above the assignment's points as
+ * {@code max_score} = its points and {@code score} = its points when it passed (0 when it failed),
+ * a {@code "bonus"} tag and " (bonus)" after its name, so a failed bonus test reads "0 / 1" rather
+ * than a puzzling "0 / 0". The top-level {@code score} is given, so Gradescope does not add up the
+ * tests' maxima: it counts every point earned, bonus included, against the assignment's points (the
+ * regular tests' points), so a submission can score above the maximum, which Gradescope shows as
  * extra credit, and a failed bonus test costs nothing.
  */
 public final class GradescopeResults {
@@ -46,7 +47,7 @@ public final class GradescopeResults {
             test.put("name", name(t));
             test.put("number", t.task() + "." + n);
             test.put("score", t.earned());
-            test.put("max_score", t.possible());
+            test.put("max_score", t.points());
             test.put("status", t.passed() ? "passed" : "failed");
             String page = html.get(t.id());
             test.put("output", page != null ? page : t.message());

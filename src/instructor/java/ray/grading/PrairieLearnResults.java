@@ -16,7 +16,10 @@ import java.util.Map;
  * as Gradescope's score over its max_score, but capped at 1, because PrairieLearn takes a question's
  * score only in [0, 1]: bonus points can make up for failed regular tests, and anything above full
  * marks is lost (extra credit beyond a question's points is an assessment setting, maxBonusPoints).
- * A bonus test shows {@code max_points} 0, as on Gradescope.
+ * A bonus test shows its points as its {@code max_points}, as on Gradescope, so a failed one reads
+ * 0 of 1; the score's maximum stays the regular tests' points. (PrairieLearn's results panel heads
+ * the tests with the sum of their points over the sum of their maxima, bonus tests included; the
+ * percentage beside it is {@code score}.)
  *
  * <p>Visibility: PrairieLearn shows every test to the student, so a test that is not "visible" on
  * Gradescope (hidden, after the due date, after publishing) is shown as "Hidden test N" with its
@@ -44,7 +47,7 @@ public final class PrairieLearnResults {
             Map<String, Object> test = new LinkedHashMap<>();
             test.put("name", visible ? GradescopeResults.name(t) : "Hidden test " + ++hidden + (t.bonus() ? " (bonus)" : ""));
             test.put("points", t.earned());
-            test.put("max_points", t.possible());
+            test.put("max_points", t.points());
             RenderFeedback.Shown shown = visible ? pictures.get(t.id()) : null;
             test.put("message", !visible ? "" : shown != null && shown.advice != null ? t.message() + "\n" + shown.advice : t.message());
             test.put("output", "");

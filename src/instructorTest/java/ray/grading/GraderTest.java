@@ -49,7 +49,7 @@ public class GraderTest {
 
     /**
      * Per task: regular points scored, regular points possible, bonus points scored, bonus tests
-     * failed. Bonus tests (tagged "bonus") have max_score 0 and are counted apart.
+     * failed. Bonus tests (tagged "bonus") have their points as max_score and are counted apart.
      */
     @SuppressWarnings("unchecked")
     private static Map<Integer, double[]> pointsByTask(Map<String, Object> results) {
@@ -58,7 +58,7 @@ public class GraderTest {
             int task = Integer.parseInt(((String) t.get("number")).split("\\.")[0]);
             double[] row = byTask.computeIfAbsent(task, k -> new double[4]);
             if (((List<String>) t.get("tags")).contains("bonus")) {
-                assertEquals(t.get("name") + " is a bonus test", 0, (Double) t.get("max_score"), 0);
+                assertTrue(t.get("name") + " is a bonus test out of its own points", (Double) t.get("max_score") > 0);
                 row[2] += (Double) t.get("score");
                 row[3] += "failed".equals(t.get("status")) ? 1 : 0;
             } else {

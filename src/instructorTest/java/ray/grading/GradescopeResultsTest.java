@@ -10,7 +10,7 @@ import org.junit.Test;
 /**
  * The points arithmetic of results.json and the console table on hand-made outcomes, bonus tests
  * included: a bonus test adds its points to the score when it passes, never adds to the maximum,
- * and costs nothing when it fails.
+ * and costs nothing when it fails; its own entry shows its points as its maximum.
  */
 public class GradescopeResultsTest {
     /** Task 2: regular 2 (passed) and 1 (failed), bonus 1 (passed) and 1 (failed); task 3: regular 3 and bonus 0.5, both passed; task 4: regular 4, failed. */
@@ -49,21 +49,21 @@ public class GradescopeResultsTest {
     }
 
     @Test
-    public void aPassedBonusTestScoresItsPointsOutOfZero() {
+    public void aPassedBonusTestScoresItsPointsOutOfItsPoints() {
         Map<String, Object> passed = test(GradescopeResults.of(OUTCOMES, "", 1.0), 2);
         assertEquals("Task 2 (Sphere): SphereHardCasesBonusTest.farSphere (bonus)", passed.get("name"));
         assertEquals("2.3", passed.get("number"));
         assertEquals(1.0, (Double) passed.get("score"), 0);
-        assertEquals(0.0, (Double) passed.get("max_score"), 0);
+        assertEquals(1.0, (Double) passed.get("max_score"), 0);
         assertEquals("passed", passed.get("status"));
         assertEquals(List.of("task2", "bonus"), passed.get("tags"));
     }
 
     @Test
-    public void aFailedBonusTestScoresZeroOutOfZero() {
+    public void aFailedBonusTestScoresZeroOutOfItsPoints() {
         Map<String, Object> failed = test(GradescopeResults.of(OUTCOMES, "", 1.0), 3);
         assertEquals(0.0, (Double) failed.get("score"), 0);
-        assertEquals(0.0, (Double) failed.get("max_score"), 0);
+        assertEquals(1.0, (Double) failed.get("max_score"), 0);
         assertEquals("failed", failed.get("status"));
         assertEquals("[Task 2] it failed", failed.get("output"));
     }

@@ -51,7 +51,21 @@ public class PrairieLearnResultsTest {
         Map<String, Object> bonus = test(results, 2);
         assertEquals("Task 2 (Sphere): SphereHardCasesBonusTest.farSphere (bonus)", bonus.get("name"));
         assertEquals(1.0, (Double) bonus.get("points"), 0);
-        assertEquals(0.0, (Double) bonus.get("max_points"), 0);
+        assertEquals("a bonus test is out of its own points", 1.0, (Double) bonus.get("max_points"), 0);
+        Map<String, Object> failedBonus = test(results, 3);
+        assertEquals(0.0, (Double) failedBonus.get("points"), 0);
+        assertEquals(1.0, (Double) failedBonus.get("max_points"), 0);
+    }
+
+    @Test
+    public void bonusMaximaDoNotRaiseTheScoresMaximum() {
+        // Only bonus tests passed: 1 + 0.5 bonus points over 10 regular ones, not over 12.5.
+        List<TestOutcome> onlyBonus = new ArrayList<>();
+        for (TestOutcome t : OUTCOMES) {
+            onlyBonus.add(GradescopeResultsTest.outcome(t.className().substring("ray.surface.".length()), t.method(), t.task(),
+                    t.points(), t.bonus(), t.bonus() && !t.method().equals("tangent")));
+        }
+        assertEquals(0.15, (Double) PrairieLearnResults.of(onlyBonus, "").get("score"), 1e-12);
     }
 
     @Test
