@@ -11,10 +11,14 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * Gradescope's results.json: {@code score}, {@code max_score}, {@code execution_time},
- * {@code output}, {@code visibility}, {@code stdout_visibility} and one entry per test with
- * {@code name}, {@code number}, {@code score}, {@code max_score}, {@code status}, {@code output},
- * {@code tags} and {@code visibility}.
+ * Gradescope's results.json: {@code score}, {@code execution_time}, {@code output},
+ * {@code output_format}, {@code visibility}, {@code stdout_visibility}, {@code extra_data} and one
+ * entry per test with {@code name}, {@code number}, {@code score}, {@code max_score},
+ * {@code status}, {@code output}, {@code output_format}, {@code tags} and {@code visibility}: only
+ * keys of Gradescope's specification at each level. The maximum score (the regular tests' points)
+ * is no top-level key there (the assignment's points are set on Gradescope), so it goes in
+ * {@code extra_data} as {@code max_score}, with the bonus points offered as {@code bonus_max_score},
+ * for the class gradebook ({@link GradedResult}).
  *
  * <p>A bonus test ({@code @Points(..., bonus = true)}) is extra credit: its entry has
  * {@code max_score} = its points and {@code score} = its points when it passed (0 when it failed),
@@ -41,6 +45,7 @@ public final class GradescopeResults {
         Map<Integer, Integer> numberInTask = new TreeMap<>();
         double score = 0;
         double max = 0;
+        double bonusMax = 0;
         for (TestOutcome t : outcomes) {
             int n = numberInTask.merge(t.task(), 1, Integer::sum);
             Map<String, Object> test = new LinkedHashMap<>();
@@ -57,17 +62,32 @@ public final class GradescopeResults {
             tests.add(test);
             score += t.earned();
             max += t.possible();
+            bonusMax += t.points() - t.possible();
         }
         Map<String, Object> results = new LinkedHashMap<>();
         results.put("score", score);
-        results.put("max_score", max);
         results.put("execution_time", Math.round(seconds * 10) / 10.0);
         results.put("output", output);
         results.put("output_format", "text");
         results.put("visibility", "visible");
         results.put("stdout_visibility", "hidden");
+        Map<String, Object> extra = new LinkedHashMap<>();
+        extra.put("max_score", max);
+        extra.put("bonus_max_score", bonusMax);
+        results.put("extra_data", extra);
         results.put("tests", tests);
         return results;
+    }
+
+    /**
+     * The maximum score of results as {@link #of} builds them or as read back from the file: the
+     * regular tests' points, from {@code extra_data}, or from the top-level {@code max_score} that
+     * files written before it moved there carry; 0 when neither is there.
+     */
+    static double maxScore(Map<?, ?> results) {
+        Object extra = results.get("extra_data");
+        Object max = extra instanceof Map<?, ?> m && m.containsKey("max_score") ? m.get("max_score") : results.get("max_score");
+        return max instanceof Number n ? n.doubleValue() : 0;
     }
 
     /** A test's name as students see it: "Task 2 (Sphere): SphereTest.hit", " (bonus)" after a bonus test's. */

@@ -54,6 +54,16 @@ public class ClassReportingTest {
         assertEquals(1, r.bonus(), 0);
         assertEquals(Map.of("a", true, "b", false, "c", true), r.passed());
         assertEquals(GradedResult.NONE, GradedResult.parse("not json at all".substring(0, 0)));
+        assertEquals("a file written before the maximum moved to extra_data", 10, r.maxScore(), 0);
+    }
+
+    @Test
+    public void readsTheMaximumFromExtraData() {
+        String json = GradescopeResults.json(GradescopeResults.of(GradescopeResultsTest.OUTCOMES, "", 1.0));
+        GradedResult r = GradedResult.parse(json);
+        assertEquals(10, r.maxScore(), 0);
+        assertEquals(6.5, r.score(), 0);
+        assertEquals(1.5, r.bonus(), 0);
     }
 
     @Test

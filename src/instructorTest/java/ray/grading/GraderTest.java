@@ -96,7 +96,7 @@ public class GraderTest {
         assertTrue("task 3 has bonus tests", byTask.get(3)[2] > 0);
         assertEquals("task 3 (the solution) passes every bonus test", 0, byTask.get(3)[3], 0);
         assertEquals("an exiting group loses all of task 4", 0, byTask.get(4)[0], 0);
-        double max = (Double) results.get("max_score");
+        double max = GradescopeResults.maxScore(results);
         double bonus = byTask.values().stream().mapToDouble(row -> row[2]).sum();
         // The score is what the regular tests of tasks 1 and 3 earn, plus every bonus point earned on top.
         assertEquals(max - byTask.get(2)[1] - byTask.get(4)[1] + bonus, (Double) results.get("score"), 1e-9);

@@ -1,10 +1,12 @@
 package ray.grading;
 
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.junit.Test;
 
 /**
@@ -35,6 +37,36 @@ public class GradescopeResultsTest {
         return ((List<Map<String, Object>>) results.get("tests")).get(index);
     }
 
+    /** The top-level keys of Gradescope's results.json specification (gradescope-autograders.readthedocs.io, "specs"). */
+    static final Set<String> GRADESCOPE_KEYS = Set.of("score", "execution_time", "output", "output_format", "test_output_format",
+            "test_name_format", "visibility", "stdout_visibility", "extra_data", "tests", "leaderboard");
+    /** A test's keys in the same specification. */
+    static final Set<String> GRADESCOPE_TEST_KEYS = Set.of("score", "max_score", "status", "name", "name_format", "number",
+            "output", "output_format", "tags", "visibility", "extra_data");
+
+    @Test
+    @SuppressWarnings("unchecked")
+    public void everyKeyIsInGradescopesSpecification() {
+        List<Map<String, Object>> files = List.of(GradescopeResults.of(OUTCOMES, "graded", 1.0),
+                GradescopeResults.of(OUTCOMES, "graded", 1.0, Map.of(OUTCOMES.get(1).id(), "<p>page</p>")),
+                GradescopeResults.of(List.of(), "The autograder could not grade this submission: why\n", 0.1));
+        for (Map<String, Object> results : files) {
+            assertTrue(results.keySet().toString(), GRADESCOPE_KEYS.containsAll(results.keySet()));
+            for (Map<String, Object> test : (List<Map<String, Object>>) results.get("tests")) {
+                assertTrue(test.keySet().toString(), GRADESCOPE_TEST_KEYS.containsAll(test.keySet()));
+            }
+        }
+        assertFalse("no top-level max_score: Gradescope's specification has none", files.get(0).containsKey("max_score"));
+    }
+
+    @Test
+    public void theMaximumGoesInExtraDataWithTheBonusOffered() {
+        Map<?, ?> extra = (Map<?, ?>) GradescopeResults.of(OUTCOMES, "", 1.0).get("extra_data");
+        assertEquals(10.0, (Double) extra.get("max_score"), 0);
+        assertEquals(2.5, (Double) extra.get("bonus_max_score"), 0);
+        assertEquals("an older file's top-level max_score still reads", 7.0, GradescopeResults.maxScore(Map.of("max_score", 7.0)), 0);
+    }
+
     @Test
     public void theTopLevelOutputSaysItsFormat() {
         assertEquals("text", GradescopeResults.of(OUTCOMES, "", 1.0).get("output_format"));
@@ -44,7 +76,7 @@ public class GradescopeResultsTest {
     public void totalsCountBonusPointsInTheScoreButNotInTheMaximum() {
         Map<String, Object> results = GradescopeResults.of(OUTCOMES, "", 1.0);
         // Regular points: 2 + 1 + 3 + 4 = 10. Earned: 2 + 3 regular, 1 + 0.5 bonus = 6.5.
-        assertEquals(10.0, (Double) results.get("max_score"), 0);
+        assertEquals(10.0, GradescopeResults.maxScore(results), 0);
         assertEquals(6.5, (Double) results.get("score"), 0);
     }
 
@@ -85,7 +117,7 @@ public class GradescopeResultsTest {
     public void withoutBonusTestsTheScoreNeverExceedsTheMaximum() {
         List<TestOutcome> regular = OUTCOMES.stream().filter(t -> !t.bonus()).toList();
         Map<String, Object> results = GradescopeResults.of(regular, "", 1.0);
-        assertEquals(10.0, (Double) results.get("max_score"), 0);
+        assertEquals(10.0, GradescopeResults.maxScore(results), 0);
         assertEquals(5.0, (Double) results.get("score"), 0);
     }
 

@@ -8,6 +8,7 @@ import static ray.grading.GradescopeResultsTest.test;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.junit.Test;
 
 /**
@@ -16,6 +17,28 @@ import org.junit.Test;
  * nothing away.
  */
 public class PrairieLearnResultsTest {
+    /**
+     * The top-level keys of PrairieLearn's external-grader results (docs.prairielearn.com, "External
+     * grading", "Grading results": gradable, score, message, output, images, tests, format_errors; and
+     * points and max_points, which PrairieLearn's own Python grader writes).
+     */
+    static final Set<String> PRAIRIELEARN_KEYS = Set.of("gradable", "score", "points", "max_points", "output", "message",
+            "images", "tests", "format_errors");
+    /** A test's keys in the same documentation. */
+    static final Set<String> PRAIRIELEARN_TEST_KEYS = Set.of("name", "description", "points", "max_points", "message", "output",
+            "images");
+
+    @Test
+    @SuppressWarnings("unchecked")
+    public void everyKeyIsInPrairieLearnsFormat() {
+        for (Map<String, Object> results : List.of(PrairieLearnResults.of(OUTCOMES, "graded"), PrairieLearnResults.notGradable("why"))) {
+            assertTrue(results.keySet().toString(), PRAIRIELEARN_KEYS.containsAll(results.keySet()));
+            for (Map<String, Object> test : (List<Map<String, Object>>) results.getOrDefault("tests", List.of())) {
+                assertTrue(test.keySet().toString(), PRAIRIELEARN_TEST_KEYS.containsAll(test.keySet()));
+            }
+        }
+    }
+
     @Test
     public void theScoreIsEveryPointEarnedOverTheRegularPoints() {
         Map<String, Object> results = PrairieLearnResults.of(OUTCOMES, "graded");
