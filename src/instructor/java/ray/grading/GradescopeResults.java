@@ -20,6 +20,11 @@ import java.util.TreeMap;
  * {@code extra_data} as {@code max_score}, with the bonus points offered as {@code bonus_max_score},
  * for the class gradebook ({@link GradedResult}).
  *
+ * <p>The top-level output starts with the {@link ScoreSummary}: each task's points, then the bonus
+ * apart, then the total, so that bonus points cannot hide a task that failed. It counts the tests
+ * students see now and the "hidden" ones (in the total Gradescope shows at once), not those shown
+ * after the due date or publishing.
+ *
  * <p>A bonus test ({@code @Points(..., bonus = true)}) is extra credit: its entry has
  * {@code max_score} = its points and {@code score} = its points when it passed (0 when it failed),
  * a {@code "bonus"} tag and " (bonus)" after its name, so a failed bonus test reads "0 / 1" rather
@@ -67,7 +72,7 @@ public final class GradescopeResults {
         Map<String, Object> results = new LinkedHashMap<>();
         results.put("score", score);
         results.put("execution_time", Math.round(seconds * 10) / 10.0);
-        results.put("output", output);
+        results.put("output", withSummary(ScoreSummary.of(outcomes, ScoreSummary::shownNowOnGradescope), output));
         results.put("output_format", "text");
         results.put("visibility", "visible");
         results.put("stdout_visibility", "hidden");
@@ -77,6 +82,11 @@ public final class GradescopeResults {
         results.put("extra_data", extra);
         results.put("tests", tests);
         return results;
+    }
+
+    /** The score summary first, then the grader's own output after a blank line. */
+    static String withSummary(String summary, String output) {
+        return summary.isEmpty() ? output : output.isEmpty() ? summary : summary + "\n" + output;
     }
 
     /**
@@ -108,7 +118,8 @@ public final class GradescopeResults {
 
     /**
      * The console table: one row per task with its regular tests passed and points, and the bonus
-     * points earned of those offered ("-" for a task without bonus tests).
+     * points earned of those offered ("-" for a task without bonus tests), the totals, then the score
+     * and what it is made of: "Score: 151 / 150 (148 regular + 3 bonus)".
      */
     public static String table(List<TestOutcome> outcomes) {
         // Per task: regular tests passed, regular tests, points earned, points possible, bonus earned, bonus offered.
@@ -137,6 +148,11 @@ public final class GradescopeResults {
             }
         }
         s.append(row("total", total));
+        s.append("Score: ").append(number(total[2] + total[4])).append(" / ").append(number(total[3]));
+        if (total[5] > 0) {
+            s.append(" (").append(number(total[2])).append(" regular + ").append(number(total[4])).append(" bonus)");
+        }
+        s.append(System.lineSeparator());
         return s.toString();
     }
 

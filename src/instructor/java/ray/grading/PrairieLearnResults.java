@@ -21,6 +21,10 @@ import java.util.Map;
  * the tests with the sum of their points over the sum of their maxima, bonus tests included; the
  * percentage beside it is {@code score}.)
  *
+ * <p>The {@code message} is the {@link ScoreSummary}: each task's points, then the bonus apart,
+ * then the total, so that bonus points cannot hide a task that failed; every test counts there, as
+ * PrairieLearn shows every score at once.
+ *
  * <p>Visibility: PrairieLearn shows every test to the student, so a test that is not "visible" on
  * Gradescope (hidden, after the due date, after publishing) is shown as "Hidden test N" with its
  * points and no message or output, giving nothing of the test away.
@@ -59,8 +63,8 @@ public final class PrairieLearnResults {
         Map<String, Object> results = new LinkedHashMap<>();
         results.put("gradable", true);
         results.put("score", max > 0 ? Math.min(1, earned / max) : 0.0);
-        results.put("message", String.format(java.util.Locale.ROOT, "%s of %s points%s.", GradescopeResults.number(earned), GradescopeResults.number(max),
-                earned > max ? " (full marks; bonus points above them do not count here)" : ""));
+        results.put("message", ScoreSummary.of(outcomes, t -> true) + (earned > max
+                ? "PrairieLearn's score stops at full marks: the bonus points above them do not count here.\n" : ""));
         results.put("output", output);
         results.put("images", List.of());
         results.put("tests", tests);

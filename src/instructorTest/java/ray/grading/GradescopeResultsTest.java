@@ -124,13 +124,14 @@ public class GradescopeResultsTest {
     @Test
     public void theTableShowsBonusPointsInTheirOwnColumn() {
         List<String> lines = GradescopeResults.table(OUTCOMES).lines().toList();
-        assertEquals(String.join("\n", lines), 5, lines.size());
+        assertEquals(String.join("\n", lines), 6, lines.size());
         assertTrue(lines.get(0), lines.get(0).matches("task +tests passed +points +bonus"));
         // Regular tests passed, regular points, then bonus points earned / offered.
         assertRow(lines.get(1), "Task 2 (Sphere)", "1 / 2", "2 / 3", "1 / 2");
         assertRow(lines.get(2), "Task 3 (Triangle)", "1 / 1", "3 / 3", "0.5 / 0.5");
         assertRow(lines.get(3), "Task 4 (Group)", "0 / 1", "0 / 4", "-");
         assertRow(lines.get(4), "total", "2 / 4", "5 / 10", "1.5 / 2.5");
+        assertEquals("Score: 6.5 / 10 (5 regular + 1.5 bonus)", lines.get(5));
     }
 
     private static void assertRow(String line, String task, String tests, String points, String bonus) {

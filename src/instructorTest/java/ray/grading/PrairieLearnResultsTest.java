@@ -45,7 +45,7 @@ public class PrairieLearnResultsTest {
         // As Gradescope's: 6.5 earned (bonus included) of 10 regular points.
         assertEquals(true, results.get("gradable"));
         assertEquals(0.65, (Double) results.get("score"), 1e-12);
-        assertEquals("6.5 of 10 points.", results.get("message"));
+        assertTrue((String) results.get("message"), ((String) results.get("message")).endsWith("Total: 6.5 / 10 points (5 regular + 1.5 bonus)\n"));
         assertEquals("graded", results.get("output"));
         assertEquals(List.of(), results.get("images"));
     }
@@ -60,7 +60,9 @@ public class PrairieLearnResultsTest {
         }
         Map<String, Object> results = PrairieLearnResults.of(all, "");
         assertEquals(1.0, (Double) results.get("score"), 0);
-        assertTrue(((String) results.get("message")).startsWith("11.5 of 10 points (full marks;"));
+        String message = (String) results.get("message");
+        assertTrue(message, message.contains("Total: 11.5 / 10 points (10 regular + 1.5 bonus)\n"
+                + "PrairieLearn's score stops at full marks: the bonus points above them do not count here.\n"));
     }
 
     @Test
