@@ -53,6 +53,13 @@ public final class Grader implements Callable<Integer> {
     @Option(names = "--format", description = "results.json for ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}).")
     Format format = Format.gradescope;
 
+    // PrairieLearn shows every test it is given; Gradescope hides tests by their visibility itself.
+    // The environment variable lets a PrairieLearn question's info.json choose, without another entrypoint.
+    @Option(names = "--hidden-tests", defaultValue = "${env:RAY1_HIDDEN_TESTS:-summary}",
+            description = "PrairieLearn: hidden tests as one line per task (summary) or one unnamed entry each (each);"
+                    + " ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}, from RAY1_HIDDEN_TESTS when set).")
+    PrairieLearnResults.HiddenTests hiddenTests;
+
     public static void main(String[] args) {
         System.exit(new CommandLine(new Grader()).execute(args));
     }
@@ -102,7 +109,7 @@ public final class Grader implements Callable<Integer> {
             Map<String, RenderFeedback.Shown> shownPictures = withPictures ? feedback : Map.of();
             Map<String, String> pages = new LinkedHashMap<>();
             shownPictures.forEach((id, p) -> pages.put(id, p.html));
-            return format == Format.prairielearn ? PrairieLearnResults.of(cutOutcomes, cutOutput, shownPictures)
+            return format == Format.prairielearn ? PrairieLearnResults.of(cutOutcomes, cutOutput, shownPictures, hiddenTests)
                     : GradescopeResults.of(cutOutcomes, cutOutput, seconds, pages);
         });
         writeResults(results, resultsFile);

@@ -25,9 +25,13 @@ import java.util.Map;
  * then the total, so that bonus points cannot hide a task that failed; every test counts there, as
  * PrairieLearn shows every score at once.
  *
- * <p>Visibility: PrairieLearn shows every test to the student, so a test that is not "visible" on
- * Gradescope (hidden, after the due date, after publishing) is shown as "Hidden test N" with its
- * points and no message or output, giving nothing of the test away.
+ * <p>Visibility: PrairieLearn shows every test to the student, so the tests that are not "visible"
+ * on Gradescope (hidden, after the due date, after publishing) are shown, by default
+ * ({@link HiddenTests#summary}), as one entry per task, "Task 2 (Sphere): hidden tests", with their
+ * points and "3 of 4 passed, 6 / 8 points": students learn how their hidden tests went in each
+ * task, not which test failed, so the hidden tests' cases stay the instructor's. With
+ * {@link HiddenTests#each} each is shown as "Hidden test N" with its points and no message or
+ * output, as before.
  *
  * <p>Images: a failed render test's own list holds the student's render, the reference and their
  * difference as {@code {"label", "url": "data:image/png;base64,…"}} (RenderFeedback); the top-level list is empty.
@@ -36,18 +40,67 @@ public final class PrairieLearnResults {
     private PrairieLearnResults() {
     }
 
+    /**
+     * How the tests that are not "visible" on Gradescope show on PrairieLearn, which shows every test
+     * it is given: {@code --hidden-tests} of the grader.
+     */
+    public enum HiddenTests {
+        /**
+         * One entry per task, "Task 2 (Sphere): hidden tests", with their points and how many passed,
+         * never which (a task with hidden bonus tests too gets a second entry for those, marked "(bonus)").
+         */
+        summary,
+        /** One entry per test, "Hidden test N", with its points and no message: which one failed shows. */
+        each
+    }
+
     public static Map<String, Object> of(List<TestOutcome> outcomes, String output) {
-        return of(outcomes, output, Map.of());
+        return of(outcomes, output, Map.of(), HiddenTests.summary);
+    }
+
+    public static Map<String, Object> of(List<TestOutcome> outcomes, String output, HiddenTests hiddenTests) {
+        return of(outcomes, output, Map.of(), hiddenTests);
+    }
+
+    /** The hidden tests of one task (regular or bonus) as one entry. */
+    private static final class HiddenGroup {
+        final Map<String, Object> entry;
+        double points;
+        double max;
+        int passed;
+        int count;
+
+        HiddenGroup(Map<String, Object> entry) {
+            this.entry = entry;
+        }
     }
 
     /** The same, with a failed render test's pictures as its images and the known mistake it is after its message. */
-    static Map<String, Object> of(List<TestOutcome> outcomes, String output, Map<String, RenderFeedback.Shown> pictures) {
+    static Map<String, Object> of(List<TestOutcome> outcomes, String output, Map<String, RenderFeedback.Shown> pictures,
+            HiddenTests hiddenTests) {
         List<Map<String, Object>> tests = new ArrayList<>();
+        Map<String, HiddenGroup> hiddenGroups = new LinkedHashMap<>();
         double earned = 0;
         double max = 0;
         int hidden = 0;
         for (TestOutcome t : outcomes) {
             boolean visible = "visible".equals(t.visibility());
+            earned += t.earned();
+            max += t.possible();
+            if (!visible && hiddenTests == HiddenTests.summary) {
+                // Where the task's first hidden test would be; its points and counts are filled in below.
+                HiddenGroup group = hiddenGroups.computeIfAbsent(t.task() + (t.bonus() ? " bonus" : ""), k -> {
+                    Map<String, Object> entry = new LinkedHashMap<>();
+                    entry.put("name", "Task " + t.task() + " (" + t.taskTitle() + "): hidden tests" + (t.bonus() ? " (bonus)" : ""));
+                    tests.add(entry);
+                    return new HiddenGroup(entry);
+                });
+                group.points += t.earned();
+                group.max += t.points();
+                group.passed += t.passed() ? 1 : 0;
+                group.count++;
+                continue;
+            }
             Map<String, Object> test = new LinkedHashMap<>();
             test.put("name", visible ? GradescopeResults.name(t) : "Hidden test " + ++hidden + (t.bonus() ? " (bonus)" : ""));
             test.put("points", t.earned());
@@ -57,8 +110,15 @@ public final class PrairieLearnResults {
             test.put("output", "");
             test.put("images", shown != null ? shown.images : List.of());
             tests.add(test);
-            earned += t.earned();
-            max += t.possible();
+        }
+        for (HiddenGroup g : hiddenGroups.values()) {
+            g.entry.put("points", g.points);
+            g.entry.put("max_points", g.max);
+            g.entry.put("message", g.passed + " of " + g.count + " passed, " + GradescopeResults.number(g.points) + " / "
+                    + GradescopeResults.number(g.max) + (g.max == 1 ? " point" : " points")
+                    + (g.passed < g.count ? ". Hidden tests do not say which one failed, or why." : "."));
+            g.entry.put("output", "");
+            g.entry.put("images", List.of());
         }
         Map<String, Object> results = new LinkedHashMap<>();
         results.put("gradable", true);

@@ -9,6 +9,7 @@ import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
+import ray.grading.PrairieLearnResults.HiddenTests;
 import ray.grading.ProjectTree;
 import ray.grading.StudentFiles;
 
@@ -21,9 +22,11 @@ import ray.grading.StudentFiles;
  *     /grade/results/results.json (the root from {@code GRADE_ROOT}, for tests) with the same grader
  *     as Gradescope's, in PrairieLearn's format;</li>
  * <li>{@code ray1-grader/ray1/} and {@code lib/}: the {@link GradingKit};</li>
- * <li>{@code info.json} and {@code README.md}: the question's externalGradingOptions and how to set it up.</li>
+ * <li>{@code info.json} and {@code README.md}: the question's externalGradingOptions and how to set it up;
+ *     its {@code environment} sets {@code RAY1_HIDDEN_TESTS}, how the grader shows hidden tests
+ *     ({@link PrairieLearnResults.HiddenTests}, {@code summary} unless {@code --hidden-tests} says otherwise).</li>
  * </ul>
- * Usage: {@code PrairieLearnBundle PROJECT FOLDER IMAGE --classes DIR... --libraries JAR...}.
+ * Usage: {@code PrairieLearnBundle PROJECT FOLDER IMAGE [--hidden-tests summary|each] --classes DIR... --libraries JAR...}.
  */
 public final class PrairieLearnBundle {
     private PrairieLearnBundle() {
@@ -31,19 +34,36 @@ public final class PrairieLearnBundle {
 
     public static void main(String[] args) throws IOException {
         if (args.length < 3) {
-            System.err.println("usage: PrairieLearnBundle PROJECT FOLDER IMAGE --classes DIR... --libraries JAR...");
+            System.err.println("usage: PrairieLearnBundle PROJECT FOLDER IMAGE [--hidden-tests summary|each] --classes DIR... --libraries JAR...");
             System.exit(2);
+        }
+        HiddenTests hiddenTests = HiddenTests.summary;
+        for (int i = 3; i + 1 < args.length && !args[i].equals("--classes") && !args[i].equals("--libraries"); i++) {
+            if (args[i].equals("--hidden-tests")) {
+                try {
+                    hiddenTests = HiddenTests.valueOf(args[i + 1]);
+                } catch (IllegalArgumentException e) {
+                    System.err.println("error: --hidden-tests is summary or each, not " + args[i + 1]);
+                    System.exit(2);
+                }
+            }
         }
         List<Path> classes = new ArrayList<>();
         List<Path> libraries = new ArrayList<>();
         GradingKit.parse(args, 3, classes, libraries);
         Path folder = Path.of(args[1]);
-        build(Path.of(args[0]), folder, args[2], classes, libraries);
-        System.out.println("prairielearn: " + folder + " (image " + args[2] + "; see its README.md)");
+        build(Path.of(args[0]), folder, args[2], hiddenTests, classes, libraries);
+        System.out.println("prairielearn: " + folder + " (image " + args[2] + ", hidden tests: " + hiddenTests + "; see its README.md)");
+    }
+
+    /** Writes the folder afresh, hidden tests shown as a summary per task. */
+    public static void build(Path project, Path folder, String image, List<Path> classes, List<Path> libraries) throws IOException {
+        build(project, folder, image, HiddenTests.summary, classes, libraries);
     }
 
     /** Writes the folder afresh (an earlier build's files never linger in the image). */
-    public static void build(Path project, Path folder, String image, List<Path> classes, List<Path> libraries) throws IOException {
+    public static void build(Path project, Path folder, String image, HiddenTests hiddenTests, List<Path> classes,
+            List<Path> libraries) throws IOException {
         if (Files.exists(folder)) {
             ProjectTree.deleteRecursively(folder);
         }
@@ -58,15 +78,16 @@ public final class PrairieLearnBundle {
             }
         };
         sink.put("Dockerfile", GradingKit.resource("prairielearn/Dockerfile"), false);
-        sink.put("info.json", filled("info.json", image, files), false);
-        sink.put("README.md", filled("README.md", image, files), false);
+        sink.put("info.json", filled("info.json", image, files, hiddenTests), false);
+        sink.put("README.md", filled("README.md", image, files, hiddenTests), false);
         sink.put("ray1-grader/run", GradingKit.resource("prairielearn/run"), true);
         GradingKit.write(sink, "ray1-grader/", project, classes, libraries);
     }
 
-    /** A text resource with the image's name and the student files' names filled in. */
-    private static byte[] filled(String name, String image, String files) throws IOException {
+    /** A text resource with the image's name, the student files' names and the hidden tests' setting filled in. */
+    private static byte[] filled(String name, String image, String files, HiddenTests hiddenTests) throws IOException {
         String text = new String(GradingKit.resource("prairielearn/" + name), StandardCharsets.UTF_8);
-        return text.replace("@IMAGE@", image).replace("@FILES@", files).getBytes(StandardCharsets.UTF_8);
+        return text.replace("@IMAGE@", image).replace("@FILES@", files).replace("@HIDDEN_TESTS@", hiddenTests.name())
+                .getBytes(StandardCharsets.UTF_8);
     }
 }

@@ -38,6 +38,8 @@ public class PrairieLearnBundleTest {
                 .fromJson(Files.readString(folder.resolve("info.json")), Map.class).get("externalGradingOptions");
         assertEquals("example/ray1-grader:test", options.get("image"));
         assertEquals("/ray1-grader/run", options.get("entrypoint"));
+        assertEquals("hidden tests show as a summary per task by default", Map.of("RAY1_HIDDEN_TESTS", "summary"),
+                options.get("environment"));
         assertTrue(Files.readString(folder.resolve("README.md")).contains("file-names=\"ClampTexture.java,"));
 
         Path root = FOLDER.getRoot().toPath().resolve("grade");
@@ -60,6 +62,8 @@ public class PrairieLearnBundleTest {
             possible[task] += (Double) t.get("max_points");
         }
         assertTrue("Task 2 has points", possible[2] > 0);
+        List<String> names = ((List<Map<String, Object>>) results.get("tests")).stream().map(t -> (String) t.get("name")).toList();
+        assertTrue(names.toString(), names.contains("Task 2 (Sphere): hidden tests") && names.stream().noneMatch(n -> n.startsWith("Hidden test")));
         assertEquals("a stubbed sphere scores nothing in Task 2", 0, points[2], 0);
         for (int task : new int[] {1, 3, 4, 5}) {
             assertTrue("task " + task + " has points", possible[task] > 0);
