@@ -1,5 +1,6 @@
 package ray.grading;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -12,7 +13,7 @@ import java.util.function.Predicate;
  * <pre>
  * Task 1 (Camera rays): 1 / 25 points
  * Task 2 (Sphere): 25 / 25 points, bonus 2 / 2 (hidden tests: 1 of 1 passed)
- * Task 6 (Cylinder): bonus 1 / 4 (extra credit)
+ * Task 6 (Cylinder): bonus 1 / 4 (extra credit; hidden tests: 0 of 1 passed)
  * Bonus: 3 / 6 points (extra credit)
  * Total: 29 / 50 points (26 regular + 3 bonus)
  * </pre>
@@ -108,9 +109,13 @@ final class ScoreSummary {
         return s.toString();
     }
 
-    /** "25 / 25 points, bonus 1 / 2 (hidden tests: 3 of 4 passed)", "bonus 1 / 4 (extra credit)". */
+    /**
+     * "25 / 25 points, bonus 1 / 2 (hidden tests: 3 of 4 passed)", "bonus 1 / 4 (extra credit;
+     * hidden tests: 1 of 1 passed)", "2 tests not counted yet".
+     */
     private static String line(Task t) {
         StringBuilder s = new StringBuilder();
+        List<String> notes = new ArrayList<>();
         boolean regular = t.max > 0 || (t.bonusMax == 0 && t.notCounted == 0);
         if (regular) {
             s.append(fraction(t.points, t.max)).append(" points");
@@ -118,17 +123,20 @@ final class ScoreSummary {
         if (t.bonusMax > 0) {
             s.append(regular ? ", " : "").append("bonus ").append(fraction(t.bonus, t.bonusMax));
             if (!regular) {
-                s.append(" (extra credit)");
+                notes.add("extra credit");
             }
         }
         if (t.hidden > 0) {
-            s.append(" (hidden tests: ").append(t.hiddenPassed).append(" of ").append(t.hidden).append(" passed)");
+            notes.add("hidden tests: " + t.hiddenPassed + " of " + t.hidden + " passed");
         }
         if (t.notCounted > 0) {
-            String later = tests(t.notCounted) + " not counted yet";
-            s.append(s.length() > 0 ? " (" + later + ")" : later);
+            notes.add(tests(t.notCounted) + " not counted yet");
         }
-        return s.toString();
+        if (s.length() == 0) {
+            // Nothing counted yet: the note is the line.
+            return String.join("; ", notes);
+        }
+        return notes.isEmpty() ? s.toString() : s + " (" + String.join("; ", notes) + ")";
     }
 
     private static String fraction(double earned, double of) {

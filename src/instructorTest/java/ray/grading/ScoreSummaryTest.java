@@ -36,11 +36,13 @@ public class ScoreSummaryTest {
                 false, "visible", true, "", 0.1);
         TestOutcome bonus = new TestOutcome("ray.surface.CylinderBonusTest#hit", "ray.surface.CylinderBonusTest", "hit", 6, "Cylinder",
                 26, true, "visible", true, "", 0.1);
-        String summary = ScoreSummary.of(List.of(camera, cameraHit, bonus), t -> true);
+        TestOutcome hiddenBonus = new TestOutcome("ray.hidden.Task6HiddenTest#cap", "ray.hidden.Task6HiddenTest", "cap", 6, "Cylinder",
+                1, true, "hidden", false, "missed the cap", 0.1);
+        String summary = ScoreSummary.of(List.of(camera, cameraHit, bonus, hiddenBonus), t -> true);
         assertEquals(String.join("\n",
                 "Task 1 (Camera rays): 1 / 26 points",
-                "Task 6 (Cylinder): bonus 26 / 26 (extra credit)",
-                "Bonus: 26 / 26 points (extra credit)",
+                "Task 6 (Cylinder): bonus 26 / 27 (extra credit; hidden tests: 0 of 1 passed)",
+                "Bonus: 26 / 27 points (extra credit)",
                 "Total: 27 / 26 points (1 regular + 26 bonus)",
                 ""), summary);
     }
