@@ -56,6 +56,11 @@ public record ClassSubmission(String id, Path path, List<Submitter> submitters) 
         return submitters.stream().map(Submitter::email).collect(Collectors.joining("; "));
     }
 
+    /** Their student IDs (Gradescope's {@code :sid:}), "; " between them. */
+    public String sids() {
+        return submitters.stream().map(Submitter::sid).collect(Collectors.joining("; "));
+    }
+
     /** When it last changed: a zip's time, or the newest file's in a folder (a re-upload touches them). */
     public FileTime lastModified() throws IOException {
         try (Stream<Path> walk = Files.walk(path)) {

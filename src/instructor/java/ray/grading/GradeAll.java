@@ -21,7 +21,8 @@ import picocli.CommandLine.Option;
  * {@code gradle gradeAll -Psubmissions=DIR}: grades every submission in DIR (subfolders and .zip
  * files, or Gradescope's "Export Submissions" folder with its submission_metadata.yml), a few at
  * once, into OUT/&lt;id&gt;/results.json (with the grader's log beside it), then writes
- * OUT/gradebook.csv and OUT/index.html for the whole class.
+ * OUT/gradebook.csv, OUT/index.html and OUT/lms.csv (one row per student, by student ID, for a
+ * learning management system's import) for the whole class.
  *
  * <p>It resumes: a submission whose results.json is newer than the submission is not graded again,
  * so a run that was stopped, or one after a few late submissions were added, grades only what is new.
@@ -43,6 +44,10 @@ public final class GradeAll implements Callable<Integer> {
     // Half the cores: each grading also runs test JVMs and javac, which use the other half.
     @Option(names = "--jobs", description = "Submissions graded at once (default: half the cores, at least 1).")
     int jobs = Math.max(1, Runtime.getRuntime().availableProcessors() / 2);
+
+    @Option(names = "--lms-total", description = "lms.csv's total: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE};"
+            + " score = every point, bonus included; capped = at most the maximum; regular = without the bonus).")
+    Gradebook.LmsTotal lmsTotal = Gradebook.LmsTotal.score;
 
     /** Where the log and progress lines go (the original stderr, as System.err is routed per grader). */
     PrintStream log;
@@ -103,8 +108,13 @@ public final class GradeAll implements Callable<Integer> {
         }
         ReadableFiles.writeAtomically(out.resolve("gradebook.csv"), Gradebook.csv(graded));
         ReadableFiles.writeAtomically(out.resolve("index.html"), ClassReport.html(graded));
+        ReadableFiles.writeAtomically(out.resolve("lms.csv"), Gradebook.lms(graded, lmsTotal));
+        if (Gradebook.unnamed(graded) > 0) {
+            log.println("lms.csv leaves out " + Gradebook.unnamed(graded) + " of " + graded.size()
+                    + " submissions: no student is named for them (submission_metadata.yml); gradebook.csv has them");
+        }
         log.println("graded " + all.size() + " submissions in " + Progress.duration((System.nanoTime() - start) / 1e9)
-                + ": " + out.resolve("gradebook.csv") + ", " + out.resolve("index.html"));
+                + ": " + out.resolve("gradebook.csv") + ", " + out.resolve("index.html") + ", " + out.resolve("lms.csv"));
         return 0;
     }
 

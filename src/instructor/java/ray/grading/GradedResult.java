@@ -54,7 +54,7 @@ public record GradedResult(double score, double maxScore, Map<Integer, Double> t
                 }
             }
         }
-        return new GradedResult(number(results.get("score")), number(results.get("max_score")), taskPoints, bonus, passed);
+        return new GradedResult(number(results.get("score")), GradescopeResults.maxScore(results), taskPoints, bonus, passed);
     }
 
     private static double number(Object o) {

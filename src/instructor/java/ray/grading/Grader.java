@@ -60,6 +60,13 @@ public final class Grader implements Callable<Integer> {
     @Option(names = "--no-isolation", negatable = false, description = "Run student code as the grader's own user even as root.")
     boolean noIsolation;
 
+    // PrairieLearn shows every test it is given; Gradescope hides tests by their visibility itself.
+    // The environment variable lets a PrairieLearn question's info.json choose, without another entrypoint.
+    @Option(names = "--hidden-tests", defaultValue = "${env:RAY1_HIDDEN_TESTS:-summary}",
+            description = "PrairieLearn: hidden tests as one line per task (summary) or one unnamed entry each (each);"
+                    + " ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}, from RAY1_HIDDEN_TESTS when set).")
+    PrairieLearnResults.HiddenTests hiddenTests;
+
     public static void main(String[] args) {
         System.exit(new CommandLine(new Grader()).execute(args));
     }
@@ -126,7 +133,7 @@ public final class Grader implements Callable<Integer> {
             Map<String, RenderFeedback.Shown> shownPictures = withPictures ? feedback : Map.of();
             Map<String, String> pages = new LinkedHashMap<>();
             shownPictures.forEach((id, p) -> pages.put(id, p.html));
-            return format == Format.prairielearn ? PrairieLearnResults.of(cutOutcomes, cutOutput, shownPictures)
+            return format == Format.prairielearn ? PrairieLearnResults.of(cutOutcomes, cutOutput, shownPictures, hiddenTests)
                     : GradescopeResults.of(cutOutcomes, cutOutput, seconds, pages);
         });
         writeResults(results, resultsFile);

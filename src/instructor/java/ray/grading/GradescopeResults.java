@@ -11,16 +11,26 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * Gradescope's results.json: {@code score}, {@code max_score}, {@code execution_time},
- * {@code output}, {@code visibility}, {@code stdout_visibility} and one entry per test with
- * {@code name}, {@code number}, {@code score}, {@code max_score}, {@code status}, {@code output},
- * {@code tags} and {@code visibility}.
+ * Gradescope's results.json: {@code score}, {@code execution_time}, {@code output},
+ * {@code output_format}, {@code visibility}, {@code stdout_visibility}, {@code extra_data} and one
+ * entry per test with {@code name}, {@code number}, {@code score}, {@code max_score},
+ * {@code status}, {@code output}, {@code output_format}, {@code tags} and {@code visibility}: only
+ * keys of Gradescope's specification at each level. The maximum score (the regular tests' points)
+ * is no top-level key there (the assignment's points are set on Gradescope), so it goes in
+ * {@code extra_data} as {@code max_score}, with the bonus points offered as {@code bonus_max_score},
+ * for the class gradebook ({@link GradedResult}).
+ *
+ * <p>The top-level output starts with the {@link ScoreSummary}: each task's points, then the bonus
+ * apart, then the total, so that bonus points cannot hide a task that failed. It counts the tests
+ * students see now and the "hidden" ones (in the total Gradescope shows at once), not those shown
+ * after the due date or publishing.
  *
  * <p>A bonus test ({@code @Points(..., bonus = true)}) is extra credit: its entry has
- * {@code max_score} 0 and {@code score} = its points when it passed (0 when it failed), a
- * {@code "bonus"} tag and " (bonus)" after its name. The total {@code max_score} counts only the
- * regular tests' points, and the total {@code score} counts every point earned, bonus included, so a
- * submission can score above the maximum: Gradescope shows a score above the assignment's points as
+ * {@code max_score} = its points and {@code score} = its points when it passed (0 when it failed),
+ * a {@code "bonus"} tag and " (bonus)" after its name, so a failed bonus test reads "0 / 1" rather
+ * than a puzzling "0 / 0". The top-level {@code score} is given, so Gradescope does not add up the
+ * tests' maxima: it counts every point earned, bonus included, against the assignment's points (the
+ * regular tests' points), so a submission can score above the maximum, which Gradescope shows as
  * extra credit, and a failed bonus test costs nothing.
  */
 public final class GradescopeResults {
@@ -40,13 +50,14 @@ public final class GradescopeResults {
         Map<Integer, Integer> numberInTask = new TreeMap<>();
         double score = 0;
         double max = 0;
+        double bonusMax = 0;
         for (TestOutcome t : outcomes) {
             int n = numberInTask.merge(t.task(), 1, Integer::sum);
             Map<String, Object> test = new LinkedHashMap<>();
             test.put("name", name(t));
             test.put("number", t.task() + "." + n);
             test.put("score", t.earned());
-            test.put("max_score", t.possible());
+            test.put("max_score", t.points());
             test.put("status", t.passed() ? "passed" : "failed");
             String page = html.get(t.id());
             test.put("output", page != null ? page : t.message());
@@ -56,17 +67,37 @@ public final class GradescopeResults {
             tests.add(test);
             score += t.earned();
             max += t.possible();
+            bonusMax += t.points() - t.possible();
         }
         Map<String, Object> results = new LinkedHashMap<>();
         results.put("score", score);
-        results.put("max_score", max);
         results.put("execution_time", Math.round(seconds * 10) / 10.0);
-        results.put("output", output);
+        results.put("output", withSummary(ScoreSummary.of(outcomes, ScoreSummary::shownNowOnGradescope), output));
         results.put("output_format", "text");
         results.put("visibility", "visible");
         results.put("stdout_visibility", "hidden");
+        Map<String, Object> extra = new LinkedHashMap<>();
+        extra.put("max_score", max);
+        extra.put("bonus_max_score", bonusMax);
+        results.put("extra_data", extra);
         results.put("tests", tests);
         return results;
+    }
+
+    /** The score summary first, then the grader's own output after a blank line. */
+    static String withSummary(String summary, String output) {
+        return summary.isEmpty() ? output : output.isEmpty() ? summary : summary + "\n" + output;
+    }
+
+    /**
+     * The maximum score of results as {@link #of} builds them or as read back from the file: the
+     * regular tests' points, from {@code extra_data}, or from the top-level {@code max_score} that
+     * files written before it moved there carry; 0 when neither is there.
+     */
+    static double maxScore(Map<?, ?> results) {
+        Object extra = results.get("extra_data");
+        Object max = extra instanceof Map<?, ?> m && m.containsKey("max_score") ? m.get("max_score") : results.get("max_score");
+        return max instanceof Number n ? n.doubleValue() : 0;
     }
 
     /** A test's name as students see it: "Task 2 (Sphere): SphereTest.hit", " (bonus)" after a bonus test's. */
@@ -87,7 +118,8 @@ public final class GradescopeResults {
 
     /**
      * The console table: one row per task with its regular tests passed and points, and the bonus
-     * points earned of those offered ("-" for a task without bonus tests).
+     * points earned of those offered ("-" for a task without bonus tests), the totals, then the score
+     * and what it is made of: "Score: 151 / 150 (148 regular + 3 bonus)".
      */
     public static String table(List<TestOutcome> outcomes) {
         // Per task: regular tests passed, regular tests, points earned, points possible, bonus earned, bonus offered.
@@ -116,6 +148,11 @@ public final class GradescopeResults {
             }
         }
         s.append(row("total", total));
+        s.append("Score: ").append(number(total[2] + total[4])).append(" / ").append(number(total[3]));
+        if (total[5] > 0) {
+            s.append(" (").append(number(total[2])).append(" regular + ").append(number(total[4])).append(" bonus)");
+        }
+        s.append(System.lineSeparator());
         return s.toString();
     }
 

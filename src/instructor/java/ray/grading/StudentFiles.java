@@ -5,8 +5,11 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Collection;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
+import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -20,6 +23,29 @@ public final class StudentFiles {
     private static final Pattern TASK = Pattern.compile("//\\s*TODO\\(Task (\\d+)\\)");
 
     private StudentFiles() {
+    }
+
+    /**
+     * The student files a submission may leave out: those of a task whose every graded test is a
+     * bonus test (extra credit, such as the cylinder), found from the tests, not from a list. A task
+     * with no graded tests at all is not extra credit: its files stay required. A file left out is
+     * graded as the untouched stub, which costs nothing there.
+     *
+     * @param files the student files, as {@link #in} finds them
+     * @param tests every graded test (TestProcess.list)
+     */
+    public static Set<String> optional(Map<String, Integer> files, Collection<TestOutcome> tests) {
+        Map<Integer, Boolean> allBonus = new TreeMap<>();
+        for (TestOutcome t : tests) {
+            allBonus.merge(t.task(), t.bonus(), Boolean::logicalAnd);
+        }
+        Set<String> optional = new TreeSet<>();
+        files.forEach((path, task) -> {
+            if (allBonus.getOrDefault(task, false)) {
+                optional.add(path);
+            }
+        });
+        return optional;
     }
 
     /** Relative path (with '/' separators) → task number, sorted by path. */

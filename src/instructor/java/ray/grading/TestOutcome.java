@@ -26,7 +26,10 @@ public record TestOutcome(String id, String className, String method, int task, 
         return passed ? points : 0;
     }
 
-    /** The points it adds to the maximum score: its points, or none for a bonus test. */
+    /**
+     * The points it adds to the maximum score: its points, or none for a bonus test (a bonus test's
+     * own entry still shows its points as its maximum: earned of offered).
+     */
     public double possible() {
         return bonus ? 0 : points;
     }

@@ -106,14 +106,14 @@ public class GradeAllTest {
         List<String> rows = Files.readAllLines(out.resolve("gradebook.csv"), StandardCharsets.UTF_8);
         assertEquals(rows.toString(), 4, rows.size());
         List<String> header = List.of(rows.get(0).split(","));
-        assertEquals(List.of("id", "name", "email"), header.subList(0, 3));
+        assertEquals(List.of("id", "name", "email", "SID"), header.subList(0, 4));
         assertEquals(List.of("bonus", "total"), header.subList(header.size() - 2, header.size()));
         int task2 = header.indexOf("Task 2");
         int task4 = header.indexOf("Task 4");
         assertTrue(header.toString(), task2 > 0 && task4 > 0);
         GradedResult full = GradedResult.read(out.resolve("submission_1/results.json"));
         assertTrue("the solution scores its maximum and more", full.score() >= full.maxScore() && full.maxScore() > 0);
-        assertTrue(rows.get(1), rows.get(1).startsWith("submission_1,Ada Lovelace,ada@example.edu,"));
+        assertTrue(rows.get(1), rows.get(1).startsWith("submission_1,Ada Lovelace,ada@example.edu,101,"));
         assertTrue(rows.get(1), rows.get(1).endsWith("," + Gradebook.number(full.score())));
         // The name has a comma, so it is quoted; its task 2 (the sphere) earns nothing.
         assertTrue(rows.get(2), rows.get(2).startsWith("submission_2,\"Hopper, Grace\",grace@example.edu,"));
@@ -122,9 +122,18 @@ public class GradeAllTest {
         assertEquals(Gradebook.number(full.taskPoints().get(4)), sphere.get(task4));
         assertTrue(Double.parseDouble(sphere.get(sphere.size() - 1)) < full.score());
         List<String> group = List.of(rows.get(3).split(","));
-        assertEquals(List.of("submission_3", "Alan Turing; Kurt Gödel", "alan@example.edu; kurt@example.edu"), group.subList(0, 3));
+        assertEquals(List.of("submission_3", "Alan Turing; Kurt Gödel", "alan@example.edu; kurt@example.edu", "103; 104"),
+                group.subList(0, 4));
         assertEquals("a stubbed group loses task 4", "0", group.get(task4));
         assertEquals(Gradebook.number(full.taskPoints().get(2)), group.get(task2));
+
+        // lms.csv: a row per student, the group's two students each with the group's total.
+        List<String> lms = Files.readAllLines(out.resolve("lms.csv"), StandardCharsets.UTF_8);
+        assertEquals(List.of("SID,name,email,total", "101,Ada Lovelace,ada@example.edu," + Gradebook.number(full.score())),
+                lms.subList(0, 2));
+        assertEquals(lms.toString(), 5, lms.size());
+        assertTrue(lms.get(3), lms.get(3).startsWith("103,Alan Turing,alan@example.edu,"));
+        assertEquals(lms.get(3).substring(lms.get(3).lastIndexOf(',')), lms.get(4).substring(lms.get(4).lastIndexOf(',')));
 
         String html = Files.readString(out.resolve("index.html"), StandardCharsets.UTF_8);
         assertTrue(html.contains("<h2 id=\"histogram\">") && html.contains("<h2 id=\"pass-rates\">"));

@@ -127,7 +127,7 @@ public class TestProcessTest {
         assertEquals(0.5, bonusFailed.points(), 0);
         // Regular: a–f at 1 each (only a passed) and g at 3 (passed); bonus: h passed (2), i failed (0.5).
         Map<String, Object> results = GradescopeResults.of(outcomes, "", 1);
-        assertEquals(6 + 3 + 0, (Double) results.get("max_score"), 0);
+        assertEquals(6 + 3 + 0, GradescopeResults.maxScore(results), 0);
         assertEquals(1 + 3 + 2, (Double) results.get("score"), 0);
         // The class whose initializer exits costs each of its tests, and nothing else.
         List<TestOutcome> exiting = all.stream().filter(t -> t.className().equals("demo.ExitingInitializerTest"))

@@ -26,9 +26,9 @@ public @interface Points {
 
     /**
      * Extra credit: the test is worth {@code value} points on top of the maximum when it passes and
-     * nothing when it fails. In Gradescope's results.json it has {@code max_score} 0 and
-     * {@code score} = {@code value} when passed; Gradescope shows a score above the maximum as extra
-     * credit. Its failure message names the task with ", bonus" (see {@link StudentTaskRule}).
+     * nothing when it fails. In Gradescope's results.json its entry has {@code max_score} =
+     * {@code value} and {@code score} = {@code value} when passed, and the total's maximum leaves it
+     * out; Gradescope shows a score above the maximum as extra credit. Its failure message names the task with ", bonus" (see {@link StudentTaskRule}).
      */
     boolean bonus() default false;
 }
