@@ -36,6 +36,17 @@ public final class TestRunnerMain {
     private final Writer events;
     private final boolean includeUngraded;
     private volatile String running;
+    /** When the running test started (System.nanoTime), and the message it is skipped with if its task was already unfinished then. */
+    private volatile long runningSince;
+    private volatile String runningSkippedWith;
+    /** The running test's grading, and whether its class grades with ray.testing.StudentTaskRule. */
+    private volatile Map<String, Object> runningGrading;
+    private volatile boolean runningUsesRule;
+    /** How long making a test object may take (the unit tests' limit, plus the JVM's slack) before the JVM restarts. */
+    private static final int MAKING_LIMIT_SECONDS = 10;
+    private static final long MAKING_NANOS = java.util.concurrent.TimeUnit.SECONDS.toNanos(MAKING_LIMIT_SECONDS + 2);
+    /** How long a test of an unfinished task may take to reach its rule (which skips it at once) before the JVM restarts. */
+    private static final long STUCK_NANOS = java.util.concurrent.TimeUnit.SECONDS.toNanos(3);
 
     private TestRunnerMain(Writer events, boolean includeUngraded) {
         this.events = events;
@@ -72,6 +83,9 @@ public final class TestRunnerMain {
             TestRunnerMain runner = new TestRunnerMain(events, includeUngraded);
             // System.exit in a test ends the JVM; say which test did it before it goes.
             Runtime.getRuntime().addShutdownHook(new Thread(runner::reportExitDuringTest));
+            if (!listOnly) {
+                runner.watchForStuckTests();
+            }
             runner.run(classes, task, skip, listOnly);
             runner.write(Map.of("event", "done"));
         }
@@ -79,9 +93,103 @@ public final class TestRunnerMain {
         Runtime.getRuntime().halt(0);
     }
 
+    /**
+     * A test of a task whose code already never finished is failed by its rule at once; one still
+     * running after {@link #STUCK_NANOS} never reached the rule, stuck while JUnit made its object
+     * (a field that needs a class whose static initializer never ends). This JVM cannot free that
+     * thread, so the test is reported skipped and the JVM asks to be restarted ("restart"), in which
+     * the task's remaining tests are skipped before any is made.
+     */
+    private void watchForStuckTests() {
+        Thread watcher = new Thread(() -> {
+            while (true) {
+                try {
+                    Thread.sleep(250);
+                } catch (InterruptedException e) {
+                    return;
+                }
+                String test = running;
+                if (test == null || !runningUsesRule) {
+                    continue;
+                }
+                long elapsed = System.nanoTime() - runningSince;
+                String skipped = runningSkippedWith;
+                String message = null;
+                if (skipped != null && elapsed > STUCK_NANOS) {
+                    message = skipped;
+                } else if (elapsed > MAKING_NANOS && !test.equals(ruleEntered())) {
+                    // Its rule never began: JUnit is still making the test object, running student code with no limit.
+                    message = stuckBeforeTheTest(runningGrading);
+                }
+                if (message != null) {
+                    try {
+                        write(Map.of("event", "finish", "test", test, "passed", false, "message", message,
+                                "seconds", elapsed / 1e9));
+                        write(Map.of("event", "restart"));
+                    } catch (IOException e) {
+                        // The parent then sees a JVM that ended during the test.
+                    }
+                    Runtime.getRuntime().halt(0);
+                }
+            }
+        }, "ray1-stuck-test-watcher");
+        watcher.setDaemon(true);
+        watcher.start();
+    }
+
+    /** The test whose StudentTaskRule began last (ray.testing.UnfinishedTasks), or null. */
+    private static String ruleEntered() {
+        try {
+            return (String) unfinishedTasks().getMethod("lastEntered").invoke(null);
+        } catch (ReflectiveOperationException | LinkageError | RuntimeException e) {
+            return null;
+        }
+    }
+
+    /** The message of a test stuck while its object was made, under its task. */
+    private static String stuckBeforeTheTest(Map<String, Object> grading) {
+        try {
+            return (String) unfinishedTasks().getMethod("stuckBeforeTheTest", int.class, boolean.class, int.class)
+                    .invoke(null, ((Number) grading.get("task")).intValue(), Boolean.TRUE.equals(grading.get("bonus")), MAKING_LIMIT_SECONDS);
+        } catch (ReflectiveOperationException | LinkageError | RuntimeException e) {
+            return "took longer than " + MAKING_LIMIT_SECONDS + " s before the test itself began";
+        }
+    }
+
+    private static Class<?> unfinishedTasks() throws ClassNotFoundException {
+        return Class.forName("ray.testing.UnfinishedTasks", true, Thread.currentThread().getContextClassLoader());
+    }
+
+    /** Whether the test class grades with ray.testing.StudentTaskRule (a public @Rule field, its own or inherited). */
+    static boolean usesStudentRule(Class<?> type) {
+        for (java.lang.reflect.Field field : type.getFields()) {
+            if (field.isAnnotationPresent(org.junit.Rule.class) && field.getType().getName().equals("ray.testing.StudentTaskRule")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The message a test of this grading is skipped with because its task's code never finished in an
+     * earlier test (ray.testing.UnfinishedTasks, in the test classes), or null to run it.
+     */
+    private static String skippedBecauseUnfinished(Map<String, Object> grading) {
+        if (grading == null || ((Number) grading.get("task")).intValue() <= 0) {
+            return null;
+        }
+        try {
+            return (String) unfinishedTasks().getMethod("skipped", int.class, boolean.class)
+                    .invoke(null, ((Number) grading.get("task")).intValue(), Boolean.TRUE.equals(grading.get("bonus")));
+        } catch (ReflectiveOperationException | LinkageError | RuntimeException e) {
+            return null;
+        }
+    }
+
     private void run(List<String> classNames, Integer task, Set<String> skip, boolean listOnly) throws Exception {
         JUnitCore core = new JUnitCore();
-        core.addListener(new Reporter());
+        Reporter reporter = new Reporter();
+        core.addListener(reporter);
         for (String name : classNames) {
             // Not initialized here: a static initializer that runs student code (and exits, say) then
             // runs inside the first test, which takes the blame, instead of before any test started.
@@ -89,6 +197,10 @@ public final class TestRunnerMain {
             if (java.lang.reflect.Modifier.isAbstract(type.getModifiers())) {
                 continue;
             }
+            // Tests of a task whose code never finished are failed without being made (their fields may
+            // hang), as their StudentTaskRule would fail them once made.
+            Map<String, Description> skippedUnmade = new LinkedHashMap<>();
+            boolean usesRule = usesStudentRule(type);
             Filter filter = new Filter() {
                 @Override
                 public boolean shouldRun(Description d) {
@@ -96,7 +208,12 @@ public final class TestRunnerMain {
                         return d.getChildren().stream().anyMatch(this::shouldRun);
                     }
                     Map<String, Object> grade = metadata(d);
-                    return grade != null && (task == null || grade.get("task").equals(task)) && !skip.contains(idOf(d));
+                    boolean selected = grade != null && (task == null || grade.get("task").equals(task)) && !skip.contains(idOf(d));
+                    if (selected && !listOnly && usesRule && skippedBecauseUnfinished(grading(d)) != null) {
+                        skippedUnmade.put(idOf(d), d);
+                        return false;
+                    }
+                    return selected;
                 }
 
                 @Override
@@ -109,6 +226,11 @@ public final class TestRunnerMain {
                 listTests(request.getRunner().getDescription());
             } else if (filter.shouldRun(Request.aClass(type).getRunner().getDescription())) {
                 core.run(request);
+            }
+            for (Description d : skippedUnmade.values()) {
+                reporter.testStarted(d);
+                reporter.testSkipped(d, skippedBecauseUnfinished(grading(d)));
+                reporter.testFinished(d);
             }
         }
     }
@@ -189,6 +311,10 @@ public final class TestRunnerMain {
         @Override
         public void testStarted(Description d) throws IOException {
             String id = idOf(d);
+            runningSince = System.nanoTime();
+            runningGrading = grading(d);
+            runningSkippedWith = skippedBecauseUnfinished(runningGrading);
+            runningUsesRule = d.getTestClass() != null && usesStudentRule(d.getTestClass());
             running = id;
             started.put(id, System.nanoTime());
             Map<String, Object> e = metadata(d);
@@ -200,6 +326,11 @@ public final class TestRunnerMain {
         @Override
         public void testFailure(Failure failure) {
             failures.put(idOf(failure.getDescription()), explain(failure.getException(), grading(failure.getDescription())));
+        }
+
+        /** Fails a test that is not run at all, with why. */
+        void testSkipped(Description d, String why) {
+            failures.put(idOf(d), why);
         }
 
         @Override

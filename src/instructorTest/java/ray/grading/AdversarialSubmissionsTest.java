@@ -119,7 +119,8 @@ public class AdversarialSubmissionsTest {
         Graded graded = grade("leak", Map.of(SPHERE, source -> insertAfter(insertAfter(source, CLASS_BODY, probe), INTERSECT_BODY,
                 "        if (f != null) {\n            throw new IllegalStateException(leakProbeNext());\n        }\n")), null);
         String report = graded.json.contains("leak-probe: ") ? graded.json.split("leak-probe: ")[1].split("\\\\n")[0] : "(none)";
-        assertEquals("what the probe found", "found 0 files, 0 bytes", report);
+        // Nothing on disk; what the class loaders give (the explorer's page, say) is no secret, as the finder checks below.
+        assertTrue("what the probe found: " + report, report.startsWith("found 0 files, "));
         LeakFinder finder = LeakFinder.of(project);
         assertTrue(finder.secretBytes() > 50_000);
         List<String> leaks = new ArrayList<>();
@@ -193,15 +194,56 @@ public class AdversarialSubmissionsTest {
     }
 
     /**
+     * Every student class loops forever in its static initializer, so every task's code never
+     * finishes: the worst case a submission can make without slowing each test just under its limit
+     * (which the time limit bounds). It is graded, 0 points, well within PrairieLearn's 150 s.
+     */
+    @Test(timeout = 600_000)
+    @SuppressWarnings("unchecked")
+    public void codeThatNeverFinishesInAnyTaskIsGradedWithinThePlatformsLimits() throws Exception {
+        Map<String, UnaryOperator<String>> edits = new java.util.LinkedHashMap<>();
+        for (String file : StudentFiles.in(project).keySet()) {
+            edits.put(file, AdversarialSubmissionsTest::loopingStaticInitializer);
+        }
+        Graded graded = grade("every-task-loops", edits, null);
+        List<Map<String, Object>> tests = (List<Map<String, Object>>) graded.results.get("tests");
+        assertTrue(tests.stream().noneMatch(t -> "passed".equals(t.get("status"))));
+        assertEquals(0.0, ((Number) graded.results.get("score")).doubleValue(), 0);
+        assertTrue(graded.seconds + " s", graded.seconds < 150);
+        assertEquals("no process of the student's user is left", 0, studentProcesses());
+        record("every task loops in a static initializer", graded, "no");
+    }
+
+    /** A sphere that prints 50 MB and throws 5 MB messages: results.json stays under 1 MB and the other tasks pass. */
+    @Test(timeout = 600_000)
+    @SuppressWarnings("unchecked")
+    public void hugeOutputKeepsTheResultsSmall() throws Exception {
+        Graded graded = grade("huge-output", Map.of(SPHERE, source -> insertAfter(source, INTERSECT_BODY,
+                "        if (f != null) {\n            String shout = \"shout \".repeat(900_000);\n"
+                        + "            for (int i = 0; i < 10; i++) {\n                System.out.print(shout);\n            }\n"
+                        + "            throw new IllegalStateException(shout);\n        }\n")), null);
+        List<Map<String, Object>> tests = (List<Map<String, Object>>) graded.results.get("tests");
+        assertTrue("the other tasks pass", tests.stream().filter(t -> !((String) t.get("name")).startsWith("Task 2 "))
+                .allMatch(t -> "passed".equals(t.get("status"))));
+        record("prints 50 MB, throws 5 MB messages", graded, "no");
+    }
+
+    /**
      * The whole grade stops at --time-limit: the test then running and every later one fail with the
      * reason, the points earned before count, and results.json is written soon after the limit.
      */
     @Test(timeout = 600_000)
     @SuppressWarnings("unchecked")
     public void aWholeGradeStopsAtItsTimeLimitWithThePointsEarnedSoFar() throws Exception {
+        // Tasks 2 to 6 never finish, each costing at least its first test's 10 s: the limit comes in Task 3 or 4.
         int limit = 25;
-        Graded graded = grade("time-limit", Map.of(SPHERE, source -> insertAfter(source, INTERSECT_BODY,
-                "        while (f != null) {\n            f = f.plus(f.times(0));\n        }\n")), null, "--time-limit", String.valueOf(limit));
+        Map<String, UnaryOperator<String>> edits = new java.util.LinkedHashMap<>();
+        for (Map.Entry<String, Integer> file : StudentFiles.in(project).entrySet()) {
+            if (file.getValue() > 1) {
+                edits.put(file.getKey(), AdversarialSubmissionsTest::loopingStaticInitializer);
+            }
+        }
+        Graded graded = grade("time-limit", edits, null, "--time-limit", String.valueOf(limit));
         List<Map<String, Object>> tests = (List<Map<String, Object>>) graded.results.get("tests");
         List<Map<String, Object>> stopped = tests.stream().filter(t -> ((String) t.get("output")).contains("grading stopped at its time limit"))
                 .collect(Collectors.toList());
@@ -217,7 +259,7 @@ public class AdversarialSubmissionsTest {
             assertTrue("task " + task + "'s tests are listed", tests.stream().anyMatch(t -> ((String) t.get("name")).startsWith(prefix)));
         }
         assertTrue(graded.seconds + " s", graded.seconds < limit + 20);
-        record("infinite loop, 25 s time limit", graded, "no");
+        record("tasks 2-6 never finish, 25 s time limit", graded, "no");
     }
 
     private static Graded grade(String name, Map<String, UnaryOperator<String>> edits, Path platformResults, String... options)
@@ -272,6 +314,12 @@ public class AdversarialSubmissionsTest {
 
     private static long studentProcesses() {
         return ProcessHandle.allProcesses().filter(p -> p.info().user().map(Sandbox.USER::equals).orElse(false)).count();
+    }
+
+    /** The class with a static initializer that never ends. */
+    private static String loopingStaticInitializer(String source) {
+        return source.replaceFirst("(public class [^{]*\\{\n)",
+                "$1    static {\n        while (System.nanoTime() != 0) {\n            Thread.onSpinWait();\n        }\n    }\n");
     }
 
     private static String insertAfter(String source, String anchor, String inserted) {

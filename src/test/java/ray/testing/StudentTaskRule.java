@@ -53,10 +53,10 @@ public final class StudentTaskRule implements TestRule {
         return new Statement() {
             @Override
             public void evaluate() throws Throwable {
-                String unfinished = UnfinishedTasks.skipBecauseOf(task, bonus);
-                if (unfinished != null) {
-                    throw new AssertionError(label + "skipped: your code did not finish in " + unfinished
-                            + ", so this task's later tests were not run; make that test finish first" + workOn());
+                UnfinishedTasks.entered(description.getClassName() + "#" + description.getMethodName());
+                String skipped = UnfinishedTasks.skipped(task, bonus);
+                if (skipped != null) {
+                    throw new AssertionError(skipped);
                 }
                 try {
                     limited.evaluate();
@@ -114,6 +114,10 @@ public final class StudentTaskRule implements TestRule {
 
     /** The line under every failure: where to work. */
     private String workOn() {
+        return workOn(task);
+    }
+
+    static String workOn(StudentTask task) {
         return "\n    Work on the TODO(Task " + task.number + ") comments in " + String.join(" and ", task.files) + ".";
     }
 

@@ -15,10 +15,12 @@ import java.util.concurrent.ConcurrentHashMap;
  * never finished to the next one in {@value #EARLIER_PROPERTY}: entries {@code TASK=TEST} or
  * {@code TASK+bonus=TEST}, separated by {@code ;}.
  */
-final class UnfinishedTasks {
+public final class UnfinishedTasks {
     static final String SKIP_PROPERTY = "ray1.grading.skipAfterTimeout";
     static final String EARLIER_PROPERTY = "ray1.grading.unfinished";
     private static final Map<String, String> FIRST_UNFINISHED = new ConcurrentHashMap<>();
+    /** The test ("Class#method") whose rule was entered last: the grader's runner tells a test stuck before it. */
+    private static volatile String entered;
 
     static {
         String earlier = System.getProperty(EARLIER_PROPERTY, "");
@@ -48,6 +50,53 @@ final class UnfinishedTasks {
         }
         String regular = FIRST_UNFINISHED.get(key(task, false));
         return regular != null || !bonus ? regular : FIRST_UNFINISHED.get(key(task, true));
+    }
+
+    /** The whole message a skipped test of this task fails with, or null to run it. */
+    static String skipped(StudentTask task, boolean bonus) {
+        String unfinished = skipBecauseOf(task, bonus);
+        return unfinished == null ? null : "[" + task.label() + (bonus ? ", bonus" : "") + "] skipped: your code did not finish in "
+                + unfinished + ", so this task's later tests were not run; make that test finish first" + StudentTaskRule.workOn(task);
+    }
+
+    /**
+     * For the grader's test runner, before it even makes the test's object (whose fields may need
+     * the very class whose static initializer never finished): the message a test of task {@code number}
+     * fails with when skipped, or null to run it.
+     */
+    public static String skipped(int number, boolean bonus) {
+        for (StudentTask task : StudentTask.values()) {
+            if (task.number == number) {
+                return skipped(task, bonus);
+            }
+        }
+        return null;
+    }
+
+    /** Notes that the rule of test "Class#method" has begun: the test object was made. */
+    static void entered(String test) {
+        entered = test;
+    }
+
+    /** For the grader's test runner: the test ("Class#method") whose rule was entered last, or null. */
+    public static String lastEntered() {
+        return entered;
+    }
+
+    /**
+     * For the grader's test runner: the message of a test of task {@code number} whose object was
+     * never made, because making it ran student code (a static initializer, a field's value) that
+     * did not finish in the unit tests' limit.
+     */
+    public static String stuckBeforeTheTest(int number, boolean bonus, int seconds) {
+        for (StudentTask task : StudentTask.values()) {
+            if (task.number == number) {
+                return "[" + task.label() + (bonus ? ", bonus" : "") + "] took longer than " + seconds + " s before the test"
+                        + " itself began: does a static initializer, or a field's value, in your code never finish?"
+                        + StudentTaskRule.workOn(task);
+            }
+        }
+        return null;
     }
 
     /**
