@@ -163,8 +163,16 @@ final class Sandbox implements AutoCloseable {
         return command;
     }
 
-    /** Sets the environment a test JVM starts with: a home and temporary folder of its own. */
+    /**
+     * The environment variable naming the sandbox a process belongs to: its test JVM and whatever
+     * that starts inherit it, so that a grader ends only its own strays, not another grader's running
+     * tests (two graders as root on one machine share the user).
+     */
+    static final String MARKER = "RAY1_SANDBOX";
+
+    /** Sets the environment a test JVM starts with: a home and temporary folder of its own, and this sandbox's marker. */
     void environment(Map<String, String> environment) {
+        environment.put(MARKER, folder.toString());
         environment.keySet().removeIf(k -> k.startsWith("JAVA_TOOL_OPTIONS") || k.equals("_JAVA_OPTIONS") || k.equals("JDK_JAVA_OPTIONS"));
         environment.put("HOME", runFolder().resolve("home").toString());
         environment.put("TMPDIR", runFolder().resolve("tmp").toString());
@@ -236,15 +244,16 @@ final class Sandbox implements AutoCloseable {
 
     /**
      * Ends every process the test JVM left behind: all of {@value #USER}'s processes when isolated
-     * (a detached `setsid` child too) but the running test JVMs of other sandboxes and their
-     * descendants, else the descendants seen. Returns how many were ended.
+     * (a detached `setsid` child too) but the running test JVMs of other sandboxes in this grader and
+     * their descendants, and the processes of other graders' live sandboxes; else the descendants
+     * seen. Returns how many were ended.
      */
     int endStrayProcesses() {
         int ended = 0;
         for (int round = 0; round < 20; round++) {
             List<ProcessHandle> left = user.isPresent()
                     ? ProcessHandle.allProcesses().filter(p -> p.info().user().map(USER::equals).orElse(false))
-                            .filter(p -> !ofARunningTestJvm(p)).collect(Collectors.toList())
+                            .filter(p -> !ofARunningTestJvm(p) && !ofAnotherLiveSandbox(p)).collect(Collectors.toList())
                     : seen.stream().filter(ProcessHandle::isAlive).collect(Collectors.toList());
             if (left.isEmpty()) {
                 break;
@@ -272,6 +281,26 @@ final class Sandbox implements AutoCloseable {
             if (RUNNING.contains(p.get())) {
                 return true;
             }
+        }
+        return false;
+    }
+
+    /**
+     * Whether the process carries the marker of another sandbox that still exists (another grader's,
+     * on this machine): that grader ends it. A process without a marker, with this sandbox's, or with
+     * a removed sandbox's is a stray.
+     */
+    private boolean ofAnotherLiveSandbox(ProcessHandle process) {
+        try {
+            for (String variable : new String(Files.readAllBytes(Path.of("/proc", String.valueOf(process.pid()), "environ")),
+                    java.nio.charset.StandardCharsets.UTF_8).split("\0")) {
+                if (variable.startsWith(MARKER + "=")) {
+                    Path other = Path.of(variable.substring(MARKER.length() + 1));
+                    return !other.equals(folder) && Files.isDirectory(other) && other.getFileName().toString().startsWith("ray1-sandbox-");
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // Gone already, or no /proc: nothing to spare.
         }
         return false;
     }

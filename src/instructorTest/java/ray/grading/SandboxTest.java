@@ -79,6 +79,25 @@ public class SandboxTest {
         }
     }
 
+    /** Two graders on one machine share the user: each ends its own strays and spares the other's processes. */
+    @Test(timeout = 120_000)
+    public void aGraderEndsItsOwnStraysAndSparesAnotherGradersProcesses() throws Exception {
+        assumeTrue("isolation needs root and the user " + Sandbox.USER, Sandbox.isRoot() && Sandbox.lookUp(Sandbox.USER).isPresent());
+        int[] ids = Sandbox.lookUp(Sandbox.USER).get();
+        try (Sandbox mine = Sandbox.create(PROJECT, true); Sandbox theirs = Sandbox.create(PROJECT, true)) {
+            ProcessBuilder builder = new ProcessBuilder("setpriv", "--reuid=" + ids[0], "--regid=" + ids[1], "--clear-groups", "--",
+                    "sleep", "300");
+            theirs.environment(builder.environment());
+            Process other = builder.start();
+            assertEquals(1, sleepers(Sandbox.USER));
+            mine.endStrayProcesses();
+            assertTrue("another grader's process is spared", other.isAlive());
+            theirs.endStrayProcesses();
+            assertTrue(other.waitFor(10, TimeUnit.SECONDS));
+            assertEquals(0, sleepers(Sandbox.USER));
+        }
+    }
+
     @Test(timeout = 120_000)
     public void withoutIsolationTheSameStartUpRunsAsThisUserAndSaysSo() throws Exception {
         Path secret = folder.newFolder("grader").toPath();
