@@ -6,8 +6,10 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
@@ -19,10 +21,12 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code gradle gradeAll -Psubmissions=DIR}: grades every submission in DIR (subfolders and .zip
- * files, or Gradescope's "Export Submissions" folder with its submission_metadata.yml), a few at
- * once, into OUT/&lt;id&gt;/results.json (with the grader's log beside it), then writes
+ * files, or Gradescope's "Export Submissions" folder with its submission_metadata.yml), one per
+ * core at once, into OUT/&lt;id&gt;/results.json (with the grader's log beside it), then writes
  * OUT/gradebook.csv, OUT/index.html and OUT/lms.csv (one row per student, by student ID, for a
- * learning management system's import) for the whole class.
+ * learning management system's import) for the whole class. Each submission's grading time goes to
+ * the log as it finishes and into index.html, and the last line sums up the run (how many, how
+ * long, the median time a submission).
  *
  * <p>It resumes: a submission whose results.json is newer than the submission is not graded again,
  * so a run that was stopped, or one after a few late submissions were added, grades only what is new.
@@ -41,9 +45,10 @@ public final class GradeAll implements Callable<Integer> {
     @Option(names = "--out", description = "Where the results go (default: ${DEFAULT-VALUE}).")
     Path out = Path.of("build/gradeAll");
 
-    // Half the cores: each grading also runs test JVMs and javac, which use the other half.
-    @Option(names = "--jobs", description = "Submissions graded at once (default: half the cores, at least 1).")
-    int jobs = Math.max(1, Runtime.getRuntime().availableProcessors() / 2);
+    // Every core: a grading spends much of its time starting test JVMs and waiting for them, so one
+    // grading a core keeps the cores busy without more waiting than each grading alone.
+    @Option(names = "--jobs", description = "Submissions graded at once (default: the number of cores).")
+    int jobs = defaultJobs();
 
     @Option(names = "--lms-total", description = "lms.csv's total: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE};"
             + " score = every point, bonus included; capped = at most the maximum; regular = without the bonus).")
@@ -77,6 +82,7 @@ public final class GradeAll implements Callable<Integer> {
         Progress progress = new Progress(log, System.console() != null && log == err, all.size());
         ExecutorService pool = Executors.newFixedThreadPool(jobs);
         List<Future<?>> running = new ArrayList<>();
+        List<Double> seconds = Collections.synchronizedList(new ArrayList<>());
         try {
             for (ClassSubmission s : all) {
                 running.add(pool.submit(() -> {
@@ -84,13 +90,16 @@ public final class GradeAll implements Callable<Integer> {
                         log.println("skipped " + s.id() + ": " + results(s) + " is newer than the submission");
                         progress.skipped();
                     } else {
+                        long started = System.nanoTime();
                         try {
                             grade(s);
                         } catch (Exception | Error e) {
                             // One submission's trouble (say, a full disk) is its row's 0, not the class's stack trace.
                             log.println("failed to grade " + s.id() + " (score 0): " + e);
                         }
-                        progress.graded();
+                        double took = (System.nanoTime() - started) / 1e9;
+                        seconds.add(took);
+                        progress.graded(s.id(), took);
                     }
                     return null;
                 }));
@@ -113,9 +122,39 @@ public final class GradeAll implements Callable<Integer> {
             log.println("lms.csv leaves out " + Gradebook.unnamed(graded) + " of " + graded.size()
                     + " submissions: no student is named for them (submission_metadata.yml); gradebook.csv has them");
         }
-        log.println("graded " + all.size() + " submissions in " + Progress.duration((System.nanoTime() - start) / 1e9)
+        log.println(summary(seconds, all.size() - seconds.size(), (System.nanoTime() - start) / 1e9, jobs)
                 + ": " + out.resolve("gradebook.csv") + ", " + out.resolve("index.html") + ", " + out.resolve("lms.csv"));
         return 0;
+    }
+
+    /** The default of --jobs: one grading per core. */
+    static int defaultJobs() {
+        return Math.max(1, Runtime.getRuntime().availableProcessors());
+    }
+
+    /**
+     * The closing line: "graded 80 submissions in 412.3 s (median 9.8 s a submission, 2 at once)",
+     * then "; 3 skipped (already graded)" when some were; {@code seconds} holds each grading's time.
+     */
+    static String summary(List<Double> seconds, int skipped, double totalSeconds, int jobs) {
+        StringBuilder line = new StringBuilder(String.format(Locale.ROOT, "graded %d %s in %.1f s", seconds.size(),
+                seconds.size() == 1 ? "submission" : "submissions", totalSeconds));
+        if (!seconds.isEmpty()) {
+            // No more at once than there were to grade.
+            line.append(" (median ").append(Progress.seconds(median(seconds))).append(" a submission, ")
+                    .append(Math.min(jobs, seconds.size())).append(" at once)");
+        }
+        if (skipped > 0) {
+            line.append("; ").append(skipped).append(" skipped (already graded)");
+        }
+        return line.toString();
+    }
+
+    static double median(List<Double> values) {
+        List<Double> sorted = new ArrayList<>(values);
+        Collections.sort(sorted);
+        int n = sorted.size();
+        return n % 2 == 1 ? sorted.get(n / 2) : (sorted.get(n / 2 - 1) + sorted.get(n / 2)) / 2;
     }
 
     private Path results(ClassSubmission s) {
