@@ -15,6 +15,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -27,6 +28,10 @@ import picocli.CommandLine.Option;
  * learning management system's import) for the whole class. Each submission's grading time goes to
  * the log as it finishes and into index.html, and the last line sums up the run (how many, how
  * long, the median time a submission).
+ *
+ * <p>The instructor's tree is copied and compiled once for the run ({@link CompiledTree}), not once
+ * per submission, and each grading runs on a copy of it: a snapshot, so that editing the project
+ * while gradeAll runs changes no grade.
  *
  * <p>It resumes: a submission whose results.json is newer than the submission is not graded again,
  * so a run that was stopped, or one after a few late submissions were added, grades only what is new.
@@ -79,11 +84,29 @@ public final class GradeAll implements Callable<Integer> {
         }
         Files.createDirectories(out);
         long start = System.nanoTime();
-        Progress progress = new Progress(log, System.console() != null && log == err, all.size());
+        // The instructor's tree is compiled once for the class (when there is anything to grade),
+        // in a hidden folder of -Pout that the run removes; each grading copies it.
+        trees = Files.createTempDirectory(out, ".instructor-");
         ExecutorService pool = Executors.newFixedThreadPool(jobs);
         List<Future<?>> running = new ArrayList<>();
         List<Double> seconds = Collections.synchronizedList(new ArrayList<>());
         try {
+            long toGrade = 0;
+            for (ClassSubmission s : all) {
+                toGrade += upToDate(s) ? 0 : 1;
+            }
+            if (toGrade > 0) {
+                long compiling = System.nanoTime();
+                try {
+                    tree = newTree();
+                } catch (IllegalStateException e) {
+                    log.println("error: " + e.getMessage());
+                    return 1;
+                }
+                log.println("compiled the instructor's tree in " + Progress.seconds((System.nanoTime() - compiling) / 1e9)
+                        + ", once for the " + toGrade + (toGrade == 1 ? " submission" : " submissions") + " to grade");
+            }
+            Progress progress = new Progress(log, System.console() != null && log == err, all.size());
             for (ClassSubmission s : all) {
                 running.add(pool.submit(() -> {
                     if (upToDate(s)) {
@@ -92,7 +115,7 @@ public final class GradeAll implements Callable<Integer> {
                     } else {
                         long started = System.nanoTime();
                         try {
-                            grade(s);
+                            gradeOnSharedTree(s);
                         } catch (Exception | Error e) {
                             // One submission's trouble (say, a full disk) is its row's 0, not the class's stack trace.
                             log.println("failed to grade " + s.id() + " (score 0): " + e);
@@ -107,10 +130,12 @@ public final class GradeAll implements Callable<Integer> {
             for (Future<?> f : running) {
                 f.get();
             }
+            progress.finish();
         } finally {
             pool.shutdownNow();
+            pool.awaitTermination(1, TimeUnit.MINUTES);
+            ProjectTree.deleteRecursively(trees);
         }
-        progress.finish();
         Map<ClassSubmission, GradedResult> graded = new LinkedHashMap<>();
         for (ClassSubmission s : all) {
             graded.put(s, GradedResult.read(results(s)));
@@ -166,14 +191,61 @@ public final class GradeAll implements Callable<Integer> {
         return Files.isRegularFile(results) && Files.getLastModifiedTime(results).compareTo(s.lastModified()) > 0;
     }
 
-    /** One Grader, in this JVM, its console output routed to OUT/&lt;id&gt;/grader.log. */
-    private void grade(ClassSubmission s) throws IOException {
+    /** The compiled tree gradings copy now; a fresh one replaces it when it changed. */
+    private CompiledTree tree;
+    /** Where the compiled trees are, under -Pout. */
+    private Path trees;
+    private int treesBuilt;
+
+    /** A new compiled tree of the project, under {@link #trees}. */
+    private CompiledTree newTree() throws IOException {
+        return CompiledTree.build(project, trees.resolve("tree-" + ++treesBuilt), classpath);
+    }
+
+    private synchronized CompiledTree currentTree() {
+        return tree;
+    }
+
+    /** Once {@code changed} is found changed, the gradings that start from now on copy a fresh tree. */
+    private synchronized void replace(CompiledTree changed) throws IOException {
+        if (tree == changed) {
+            tree = newTree();
+        }
+    }
+
+    /**
+     * Grades {@code s} on the shared compiled tree, and checks that the tree is still as it was
+     * compiled. Student code can find it (and, running as the grader's user, write to it): when it
+     * changed, by this submission's code or by one graded at the same time, this grading may have
+     * used it changed, so it is graded again on a fresh tree, which every later grading uses too.
+     */
+    private void gradeOnSharedTree(ClassSubmission s) throws IOException {
+        for (int attempt = 1; ; attempt++) {
+            CompiledTree used = currentTree();
+            grade(s, used);
+            if (used.unchanged()) {
+                return;
+            }
+            replace(used);
+            if (attempt == 2) {
+                log.println("warning: the compiled instructor tree changed again while " + s.id() + " was graded on a fresh copy:"
+                        + " its results stand, but check them by hand (and this submission's code)");
+                return;
+            }
+            log.println("warning: the compiled instructor tree changed while " + s.id() + " was graded (student code wrote to"
+                    + " it: this submission's, or one graded at the same time); grading " + s.id() + " again on a fresh copy");
+        }
+    }
+
+    /** One Grader, in this JVM, on a copy of {@code tree}, its console output routed to OUT/&lt;id&gt;/grader.log. */
+    private void grade(ClassSubmission s, CompiledTree tree) throws IOException {
         Path folder = out.resolve(s.id());
         Files.createDirectories(folder);
         try (OutputStream graderLog = Files.newOutputStream(folder.resolve("grader.log"))) {
             ThreadOutput.route(graderLog);
             // A submission that cannot be graded still has a results.json (0 points and why): the Grader writes it.
-            int status = new CommandLine(new Grader()).execute("--project", project.toString(), "--classpath", classpath,
+            // Its project is the compiled tree: the student files, stubs and secrets as they were compiled.
+            int status = new CommandLine(new Grader(tree)).execute("--project", tree.root().toString(), "--classpath", classpath,
                     "--submission", s.path().toString(), "--out", folder.toString());
             if (status != 0) {
                 log.println("failed to grade " + s.id() + " (score 0): see " + folder.resolve("results.json"));

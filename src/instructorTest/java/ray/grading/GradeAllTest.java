@@ -158,6 +158,10 @@ public class GradeAllTest {
         Collections.sort(sorted);
         assertEquals(log, sorted.get(1), summary[2], 0.051);
         assertEquals(log, Math.min(3, Runtime.getRuntime().availableProcessors()), summary[3], 0);
+        // The instructor's tree was compiled once for all three, and is gone afterwards.
+        assertEquals(log, 1, log.lines().filter(l -> l.startsWith("compiled the instructor's tree in ")).count());
+        assertTrue(log, log.contains(", once for the 3 submissions to grade"));
+        assertEquals(List.of(), leftOver(out));
 
         List<String> rows = Files.readAllLines(out.resolve("gradebook.csv"), StandardCharsets.UTF_8);
         assertEquals(rows.toString(), 4, rows.size());
@@ -213,9 +217,92 @@ public class GradeAllTest {
         String again = gradeAll(dir, out, 2, 0);
         assertEquals(again, 3, again.lines().filter(l -> l.startsWith("skipped submission_")).count());
         assertEquals(again, Map.of(), gradingSeconds(again));
+        assertTrue("nothing to grade, nothing to compile: " + again, !again.contains("compiled the instructor's tree"));
         assertEquals(again, 0, summary(again)[0], 0);
         assertTrue(again, again.contains("; 3 skipped (already graded)"));
         assertEquals("nothing is graded again", graded, Files.getLastModifiedTime(out.resolve("submission_2/results.json")));
+    }
+
+    /** What a run left in its output folder besides the submissions' folders and the reports: hidden folders. */
+    private static List<String> leftOver(Path out) throws Exception {
+        try (Stream<Path> list = Files.list(out)) {
+            return list.map(p -> p.getFileName().toString()).filter(n -> n.startsWith(".")).sorted().collect(Collectors.toList());
+        }
+    }
+
+    /**
+     * Code that looks for gradeAll's compiled instructor tree above the folder its tests run in and
+     * writes garbage over every Group.class there (which, left there, would fail the next submission's
+     * render tests), then notes what it wrote beside the submissions' results (OUT/tampered.txt).
+     */
+    private static final String TAMPER = String.join("\n",
+            "    static {",
+            "        try {",
+            "            java.nio.file.Path out = java.nio.file.Path.of(\"\").toAbsolutePath();",
+            "            while (out != null && !holdsTrees(out)) {",
+            "                out = out.getParent();",
+            "            }",
+            "            StringBuilder wrote = new StringBuilder();",
+            "            try (java.util.stream.Stream<java.nio.file.Path> walk = java.nio.file.Files.walk(out)) {",
+            "                for (java.nio.file.Path p : (Iterable<java.nio.file.Path>) walk::iterator) {",
+            "                    if (p.toString().contains(\".instructor-\") && p.getFileName().toString().equals(\"Group.class\")) {",
+            "                        java.nio.file.Files.writeString(p, \"not a class\");",
+            "                        wrote.append(p).append('\\n');",
+            "                    }",
+            "                }",
+            "            }",
+            "            java.nio.file.Files.writeString(out.resolve(\"tampered.txt\"), wrote, java.nio.file.StandardOpenOption.CREATE,",
+            "                    java.nio.file.StandardOpenOption.APPEND);",
+            "        } catch (Exception | Error e) {",
+            "            // Not allowed to: so much the better.",
+            "        }",
+            "    }",
+            "",
+            "    private static boolean holdsTrees(java.nio.file.Path dir) {",
+            "        try (java.util.stream.Stream<java.nio.file.Path> list = java.nio.file.Files.list(dir)) {",
+            "            return list.anyMatch(p -> p.getFileName().toString().startsWith(\".instructor-\"));",
+            "        } catch (java.io.IOException e) {",
+            "            return false;",
+            "        }",
+            "    }",
+            "");
+
+    /**
+     * A submission whose code writes over the shared compiled tree (which it can, running as the
+     * grader's user) costs the next submission nothing: gradeAll notices the change, grades the
+     * culprit again on a fresh tree, and the next submission gets a fresh tree too.
+     */
+    @Test(timeout = 900_000)
+    public void aSubmissionThatWritesOverTheSharedTreeChangesNoOtherGrade() throws Exception {
+        Path dir = folder.getRoot().toPath().resolve("class");
+        Path out = folder.getRoot().toPath().resolve("grades");
+        for (String file : StudentFiles.in(PROJECT).keySet()) {
+            String solution = source(file, null);
+            write(dir.resolve("submission_b").resolve(file), solution);
+            write(dir.resolve("submission_a").resolve(file), !file.equals(SPHERE) ? solution
+                    : solution.replaceFirst("(public class Sphere [^{]*\\{\n)", "$1" + java.util.regex.Matcher.quoteReplacement(TAMPER)));
+        }
+        assertTrue(Files.readString(dir.resolve("submission_a").resolve(SPHERE)).contains("tampered.txt"));
+        String log = gradeAll(dir, out, 1, 0);
+        GradedResult tampering = GradedResult.read(out.resolve("submission_a/results.json"));
+        GradedResult next = GradedResult.read(out.resolve("submission_b/results.json"));
+        assertTrue(log + next, next.score() >= next.maxScore() && next.maxScore() > 0);
+        assertEquals(log, tampering.maxScore(), next.maxScore(), 0);
+        Path tampered = out.resolve("tampered.txt");
+        System.err.println(Files.exists(tampered) ? "the tampering submission wrote over the shared tree:\n" + Files.readString(tampered)
+                : "the tampering submission could not write over the shared tree");
+        if (Files.exists(tampered)) {
+            // It wrote (the grader's own user runs the tests): noticed after each of its two gradings.
+            assertTrue(Files.readString(tampered), Files.readString(tampered).contains("Group.class"));
+            assertTrue(log, log.contains("warning: the compiled instructor tree changed while submission_a was graded"));
+            assertTrue(log, log.contains("warning: the compiled instructor tree changed again while submission_a was graded"));
+            assertEquals(log, 2, log.lines().filter(l -> l.startsWith("warning: the compiled instructor tree changed")).count());
+        } else {
+            // The test JVM could not write there (it runs as a user of its own): nothing to notice.
+            assertTrue(log, !log.contains("warning:"));
+        }
+        assertTrue(log, !log.contains("submission_b was graded"));
+        assertEquals(List.of(), leftOver(out));
     }
 
     @Test
