@@ -1,5 +1,6 @@
 package ray.grading;
 
+import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
@@ -27,17 +28,20 @@ import java.util.stream.Stream;
  * checked: {@link #unchanged()} compares every file with its fingerprint from when it was compiled,
  * so that gradeAll notices when student code found the tree and wrote to it (it can, while the test
  * JVM runs as the grader's user), stops using it and grades again on a fresh one. Beside it, what
- * every grading would otherwise work out again for itself: each task's list of graded tests.
+ * every grading would otherwise work out again for itself: each task's list of graded tests, and
+ * the known mistakes' renders ({@link VariantMistakes.Renders}).
  */
 public final class CompiledTree {
     private final Path root;
     private final String fingerprint;
     private final Map<Integer, List<TestOutcome>> listed = new HashMap<>();
+    private final VariantMistakes.Renders mistakeRenders;
     private volatile boolean spoiled;
 
-    private CompiledTree(Path root, String fingerprint) {
+    private CompiledTree(Path root, String fingerprint, String classpath) {
         this.root = root;
         this.fingerprint = fingerprint;
+        this.mistakeRenders = new VariantMistakes.Renders(root, root.resolve("classes") + File.pathSeparator + classpath);
     }
 
     /**
@@ -52,7 +56,7 @@ public final class CompiledTree {
             ProjectTree.deleteRecursively(at);
             throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
         }
-        return new CompiledTree(at, fingerprint(at));
+        return new CompiledTree(at, fingerprint(at), classpath);
     }
 
     public Path root() {
@@ -90,6 +94,11 @@ public final class CompiledTree {
     /** Lists graded tests, as {@link TestProcess#list} does. */
     interface Lister {
         List<TestOutcome> list() throws IOException, InterruptedException;
+    }
+
+    /** The known mistakes' renders, made in this tree (its variants, scenes and classes) once for every grading. */
+    VariantMistakes.Renders mistakeRenders() {
+        return mistakeRenders;
     }
 
     /**

@@ -249,8 +249,12 @@ public final class Grader implements Callable<Integer> {
             return;
         }
         try {
+            // The mistakes' renders depend on no submission: under gradeAll, each is made once for the
+            // class, from the compiled tree's variants (not this tree's copy).
+            VariantMistakes.Renders renders = sharedTree != null ? sharedTree.mistakeRenders() : new VariantMistakes.Renders();
+            Path variants = sharedTree != null ? sharedTree.root() : instructor;
             mistakeNames.putAll(VariantMistakes.named(instructor, sandbox.tree(), failedRenders,
-                    VariantMistakes.of(instructor, task, studentFiles), againstInstructor, mistakesWork));
+                    VariantMistakes.of(variants, task, studentFiles), againstInstructor, mistakesWork, renders));
         } catch (IOException | RuntimeException e) {
             // The feedback goes without a name; the grade is unchanged.
         } catch (InterruptedException e) {
