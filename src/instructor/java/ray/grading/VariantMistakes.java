@@ -165,6 +165,8 @@ final class VariantMistakes {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx1g", "-Djava.awt.headless=true", "-cp", classes + File.pathSeparator + classpath,
                 "ray.cli.RayTracer", "render", "-o", renders.toString()));
+        // A few scenes' renders: a short-lived JVM, like the tests'.
+        command.addAll(1, TestProcess.SHORT_LIVED_JVM);
         command.addAll(scenes);
         Process process = new ProcessBuilder(command).directory(tree.toFile()).redirectErrorStream(true)
                 .redirectOutput(out.resolve("render.log").toFile()).start();
