@@ -59,6 +59,9 @@ public final class GradeAll implements Callable<Integer> {
             + " score = every point, bonus included; capped = at most the maximum; regular = without the bonus).")
     Gradebook.LmsTotal lmsTotal = Gradebook.LmsTotal.score;
 
+    @Option(names = "--no-isolation", negatable = false, description = "Run student code as the grader's own user even as root.")
+    boolean noIsolation;
+
     /** Where the log and progress lines go (the original stderr, as System.err is routed per grader). */
     PrintStream log;
 
@@ -245,8 +248,12 @@ public final class GradeAll implements Callable<Integer> {
             ThreadOutput.route(graderLog);
             // A submission that cannot be graded still has a results.json (0 points and why): the Grader writes it.
             // Its project is the compiled tree: the student files, stubs and secrets as they were compiled.
-            int status = new CommandLine(new Grader(tree)).execute("--project", tree.root().toString(), "--classpath", classpath,
-                    "--submission", s.path().toString(), "--out", folder.toString());
+            List<String> args = new ArrayList<>(List.of("--project", tree.root().toString(), "--classpath", classpath,
+                    "--submission", s.path().toString(), "--out", folder.toString()));
+            if (noIsolation) {
+                args.add("--no-isolation");
+            }
+            int status = new CommandLine(new Grader(tree)).execute(args.toArray(new String[0]));
             if (status != 0) {
                 log.println("failed to grade " + s.id() + " (score 0): see " + folder.resolve("results.json"));
             }

@@ -1,6 +1,7 @@
 package ray.grading;
 
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 
 import java.io.ByteArrayOutputStream;
@@ -23,6 +24,7 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
+import org.junit.Assume;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
@@ -90,7 +92,7 @@ public class GradeAllTest {
     }
 
     /** Runs gradeAll; {@code jobs} null leaves --jobs to its default. */
-    private static String gradeAll(Path dir, Path out, Integer jobs, int expectedStatus) {
+    private static String gradeAll(Path dir, Path out, Integer jobs, int expectedStatus, String... options) {
         ByteArrayOutputStream log = new ByteArrayOutputStream();
         GradeAll command = new GradeAll();
         command.log = new PrintStream(log, true, StandardCharsets.UTF_8);
@@ -99,6 +101,7 @@ public class GradeAllTest {
         if (jobs != null) {
             args.addAll(List.of("--jobs", String.valueOf(jobs)));
         }
+        args.addAll(List.of(options));
         int status = new CommandLine(command).execute(args.toArray(new String[0]));
         String text = log.toString(StandardCharsets.UTF_8);
         assertEquals(text, expectedStatus, status);
@@ -231,78 +234,89 @@ public class GradeAllTest {
     }
 
     /**
-     * Code that looks for gradeAll's compiled instructor tree above the folder its tests run in and
-     * writes garbage over every Group.class there (which, left there, would fail the next submission's
-     * render tests), then notes what it wrote beside the submissions' results (OUT/tampered.txt).
+     * Code that writes garbage over every Group.class in gradeAll's compiled instructor trees under
+     * {@code out} (which, left there, would fail the next submission's render tests), then notes
+     * what it wrote in OUT/tampered.txt. The test tells it where {@code out} is; real code would
+     * search the disk.
      */
-    private static final String TAMPER = String.join("\n",
-            "    static {",
-            "        try {",
-            "            java.nio.file.Path out = java.nio.file.Path.of(\"\").toAbsolutePath();",
-            "            while (out != null && !holdsTrees(out)) {",
-            "                out = out.getParent();",
-            "            }",
-            "            StringBuilder wrote = new StringBuilder();",
-            "            try (java.util.stream.Stream<java.nio.file.Path> walk = java.nio.file.Files.walk(out)) {",
-            "                for (java.nio.file.Path p : (Iterable<java.nio.file.Path>) walk::iterator) {",
-            "                    if (p.toString().contains(\".instructor-\") && p.getFileName().toString().equals(\"Group.class\")) {",
-            "                        java.nio.file.Files.writeString(p, \"not a class\");",
-            "                        wrote.append(p).append('\\n');",
-            "                    }",
-            "                }",
-            "            }",
-            "            java.nio.file.Files.writeString(out.resolve(\"tampered.txt\"), wrote, java.nio.file.StandardOpenOption.CREATE,",
-            "                    java.nio.file.StandardOpenOption.APPEND);",
-            "        } catch (Exception | Error e) {",
-            "            // Not allowed to: so much the better.",
-            "        }",
-            "    }",
-            "",
-            "    private static boolean holdsTrees(java.nio.file.Path dir) {",
-            "        try (java.util.stream.Stream<java.nio.file.Path> list = java.nio.file.Files.list(dir)) {",
-            "            return list.anyMatch(p -> p.getFileName().toString().startsWith(\".instructor-\"));",
-            "        } catch (java.io.IOException e) {",
-            "            return false;",
-            "        }",
-            "    }",
-            "");
+    private static String tamper(Path out) {
+        String folder = out.toAbsolutePath().toString().replace("\\", "\\\\");
+        return String.join("\n",
+                "    static {",
+                "        try {",
+                "            java.nio.file.Path out = java.nio.file.Path.of(\"" + folder + "\");",
+                "            StringBuilder wrote = new StringBuilder();",
+                "            try (java.util.stream.Stream<java.nio.file.Path> walk = java.nio.file.Files.walk(out)) {",
+                "                for (java.nio.file.Path p : (Iterable<java.nio.file.Path>) walk::iterator) {",
+                "                    if (p.toString().contains(\".instructor-\") && p.getFileName().toString().equals(\"Group.class\")) {",
+                "                        java.nio.file.Files.writeString(p, \"not a class\");",
+                "                        wrote.append(p).append('\\n');",
+                "                    }",
+                "                }",
+                "            }",
+                "            java.nio.file.Files.writeString(out.resolve(\"tampered.txt\"), wrote, java.nio.file.StandardOpenOption.CREATE,",
+                "                    java.nio.file.StandardOpenOption.APPEND);",
+                "        } catch (Exception | Error e) {",
+                "            // Not allowed to: so much the better.",
+                "        }",
+                "    }",
+                "");
+    }
+
+    /** A class of submission_a, whose Sphere writes over the compiled tree, and submission_b, the solution. */
+    private static void writeTamperingClass(Path dir, Path out) throws Exception {
+        for (String file : StudentFiles.in(PROJECT).keySet()) {
+            String solution = source(file, null);
+            write(dir.resolve("submission_b").resolve(file), solution);
+            write(dir.resolve("submission_a").resolve(file), !file.equals(SPHERE) ? solution
+                    : solution.replaceFirst("(public class Sphere [^{]*\\{\n)", "$1" + Matcher.quoteReplacement(tamper(out))));
+        }
+        assertTrue(Files.readString(dir.resolve("submission_a").resolve(SPHERE)).contains("tampered.txt"));
+    }
 
     /**
-     * A submission whose code writes over the shared compiled tree (which it can, running as the
-     * grader's user) costs the next submission nothing: gradeAll notices the change, grades the
-     * culprit again on a fresh tree, and the next submission gets a fresh tree too.
+     * A submission whose code writes over the shared compiled tree (which it can when it runs as
+     * the grader's user: without root, or with --no-isolation) costs the next submission nothing:
+     * gradeAll notices the change, grades the culprit again on a fresh tree, and the next
+     * submission gets a fresh tree too. (With the check turned off, the next one loses 12 points.)
      */
     @Test(timeout = 900_000)
     public void aSubmissionThatWritesOverTheSharedTreeChangesNoOtherGrade() throws Exception {
         Path dir = folder.getRoot().toPath().resolve("class");
         Path out = folder.getRoot().toPath().resolve("grades");
-        for (String file : StudentFiles.in(PROJECT).keySet()) {
-            String solution = source(file, null);
-            write(dir.resolve("submission_b").resolve(file), solution);
-            write(dir.resolve("submission_a").resolve(file), !file.equals(SPHERE) ? solution
-                    : solution.replaceFirst("(public class Sphere [^{]*\\{\n)", "$1" + java.util.regex.Matcher.quoteReplacement(TAMPER)));
-        }
-        assertTrue(Files.readString(dir.resolve("submission_a").resolve(SPHERE)).contains("tampered.txt"));
-        String log = gradeAll(dir, out, 1, 0);
+        writeTamperingClass(dir, out);
+        String log = gradeAll(dir, out, 1, 0, "--no-isolation");
+        Path tampered = out.resolve("tampered.txt");
+        assertTrue("the tampering code ran and wrote: " + log, Files.exists(tampered));
+        System.err.println("the tampering submission wrote over the shared tree:\n" + Files.readString(tampered));
+        assertTrue(Files.readString(tampered), Files.readString(tampered).contains("Group.class"));
+        // Noticed after each of its two gradings, and never after the correct submission's.
+        assertTrue(log, log.contains("warning: the compiled instructor tree changed while submission_a was graded"));
+        assertTrue(log, log.contains("warning: the compiled instructor tree changed again while submission_a was graded"));
+        assertEquals(log, 2, log.lines().filter(l -> l.startsWith("warning: the compiled instructor tree changed")).count());
         GradedResult tampering = GradedResult.read(out.resolve("submission_a/results.json"));
         GradedResult next = GradedResult.read(out.resolve("submission_b/results.json"));
         assertTrue(log + next, next.score() >= next.maxScore() && next.maxScore() > 0);
         assertEquals(log, tampering.maxScore(), next.maxScore(), 0);
-        Path tampered = out.resolve("tampered.txt");
-        System.err.println(Files.exists(tampered) ? "the tampering submission wrote over the shared tree:\n" + Files.readString(tampered)
-                : "the tampering submission could not write over the shared tree");
-        if (Files.exists(tampered)) {
-            // It wrote (the grader's own user runs the tests): noticed after each of its two gradings.
-            assertTrue(Files.readString(tampered), Files.readString(tampered).contains("Group.class"));
-            assertTrue(log, log.contains("warning: the compiled instructor tree changed while submission_a was graded"));
-            assertTrue(log, log.contains("warning: the compiled instructor tree changed again while submission_a was graded"));
-            assertEquals(log, 2, log.lines().filter(l -> l.startsWith("warning: the compiled instructor tree changed")).count());
-        } else {
-            // The test JVM could not write there (it runs as a user of its own): nothing to notice.
-            assertTrue(log, !log.contains("warning:"));
-        }
-        assertTrue(log, !log.contains("submission_b was graded"));
         assertEquals(List.of(), leftOver(out));
+    }
+
+    /** Isolated (as root, with the user ray1-student), the same code cannot write to the tree at all. */
+    @Test(timeout = 900_000)
+    public void aSubmissionRunAsItsOwnUserCannotWriteTheSharedTree() throws Exception {
+        try (Sandbox sandbox = Sandbox.create(PROJECT, true)) {
+            Assume.assumeTrue("student code runs isolated only as root with the user " + Sandbox.USER, sandbox.isolated());
+        }
+        Path dir = folder.getRoot().toPath().resolve("class");
+        Path out = folder.getRoot().toPath().resolve("grades");
+        writeTamperingClass(dir, out);
+        // The tampering submission alone: its grade is the solution's, and the tree stayed as it was.
+        ProjectTree.deleteRecursively(dir.resolve("submission_b"));
+        String log = gradeAll(dir, out, 1, 0);
+        assertFalse(log, Files.exists(out.resolve("tampered.txt")));
+        assertFalse(log, log.contains("warning:"));
+        GradedResult tampering = GradedResult.read(out.resolve("submission_a/results.json"));
+        assertTrue(log + tampering, tampering.score() >= tampering.maxScore() && tampering.maxScore() > 0);
     }
 
     @Test
