@@ -11,7 +11,7 @@ import java.util.TreeMap;
 /**
  * index.html, the class at a glance without a server or a script: the histogram of scores, every
  * test's pass rate with the most failed first (what to explain again in class), and a link to each
- * submission's results.json.
+ * submission's results.json with the seconds its grading took.
  */
 public final class ClassReport {
     private static final int BINS = 10;
@@ -74,11 +74,14 @@ public final class ClassReport {
         h.append("</table>\n");
     }
 
+    /** Each submission's link, students, score and grading time (results.json's execution_time, blank when it has none). */
     private static void submissions(Map<ClassSubmission, GradedResult> graded, StringBuilder h) {
-        h.append("<h2 id=\"submissions\">Submissions</h2>\n<table>\n<tr><th>submission</th><th>students</th><th>score</th></tr>\n");
+        h.append("<h2 id=\"submissions\">Submissions</h2>\n<table>\n"
+                + "<tr><th>submission</th><th>students</th><th>score</th><th>grading seconds</th></tr>\n");
         graded.forEach((s, r) -> h.append("<tr><td><a href=\"").append(escape(link(s.id()))).append("\">").append(escape(s.id()))
                 .append("</a></td><td>").append(escape(s.names())).append("</td><td>").append(Gradebook.number(r.score()))
-                .append(" / ").append(Gradebook.number(r.maxScore())).append("</td></tr>\n"));
+                .append(" / ").append(Gradebook.number(r.maxScore())).append("</td><td class=\"seconds\">")
+                .append(r.seconds() > 0 ? String.format(Locale.ROOT, "%.1f", r.seconds()) : "").append("</td></tr>\n"));
         h.append("</table>\n");
     }
 

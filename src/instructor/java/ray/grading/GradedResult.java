@@ -13,15 +13,22 @@ import java.util.TreeMap;
 
 /**
  * What the class-wide reports need from one results.json: the total score, each task's regular
- * points (tests tagged "taskN" and not "bonus"), the bonus points, and which tests passed.
+ * points (tests tagged "taskN" and not "bonus"), the bonus points, which tests passed, and how long
+ * the grading took.
  *
  * @param taskPoints regular points earned, by task number
  * @param passed     each test's name → whether it passed
+ * @param seconds    the grading's time, as results.json's {@code execution_time} says (0 when it says none)
  */
 public record GradedResult(double score, double maxScore, Map<Integer, Double> taskPoints, double bonus,
-                           Map<String, Boolean> passed) {
+                           Map<String, Boolean> passed, double seconds) {
     /** No result at all (a missing or unreadable results.json): 0 points, no tests. */
     public static final GradedResult NONE = new GradedResult(0, 0, Map.of(), 0, Map.of());
+
+    /** A result without a grading time. */
+    public GradedResult(double score, double maxScore, Map<Integer, Double> taskPoints, double bonus, Map<String, Boolean> passed) {
+        this(score, maxScore, taskPoints, bonus, passed, 0);
+    }
 
     public static GradedResult read(Path resultsJson) {
         try {
@@ -54,7 +61,8 @@ public record GradedResult(double score, double maxScore, Map<Integer, Double> t
                 }
             }
         }
-        return new GradedResult(number(results.get("score")), GradescopeResults.maxScore(results), taskPoints, bonus, passed);
+        return new GradedResult(number(results.get("score")), GradescopeResults.maxScore(results), taskPoints, bonus, passed,
+                number(results.get("execution_time")));
     }
 
     private static double number(Object o) {

@@ -71,6 +71,18 @@ public final class Grader implements Callable<Integer> {
         System.exit(new CommandLine(new Grader()).execute(args));
     }
 
+    /** gradeAll's instructor tree, compiled once for the whole class; null when this run compiles its own. */
+    private final CompiledTree sharedTree;
+
+    public Grader() {
+        this(null);
+    }
+
+    /** A grader that copies {@code sharedTree} (which it only reads) instead of compiling the instructor's tree. */
+    Grader(CompiledTree sharedTree) {
+        this.sharedTree = sharedTree;
+    }
+
     /** This run's own work folder under {@code out}. */
     private Path work;
     /** Where, and as whom, the test JVMs run (Sandbox); made with the work folder. */
@@ -237,8 +249,12 @@ public final class Grader implements Callable<Integer> {
             return;
         }
         try {
+            // The mistakes' renders depend on no submission: under gradeAll, each is made once for the
+            // class, from the compiled tree's variants (not this tree's copy).
+            VariantMistakes.Renders renders = sharedTree != null ? sharedTree.mistakeRenders() : new VariantMistakes.Renders();
+            Path variants = sharedTree != null ? sharedTree.root() : instructor;
             mistakeNames.putAll(VariantMistakes.named(instructor, sandbox.tree(), failedRenders,
-                    VariantMistakes.of(instructor, task, studentFiles), againstInstructor, mistakesWork));
+                    VariantMistakes.of(variants, task, studentFiles), againstInstructor, mistakesWork, renders));
         } catch (IOException | RuntimeException e) {
             // The feedback goes without a name; the grade is unchanged.
         } catch (InterruptedException e) {
@@ -267,9 +283,15 @@ public final class Grader implements Callable<Integer> {
         }
     }
 
-    /** The instructor's tree, copied and compiled once per run (the classes every task's tests run on). */
+    /**
+     * The instructor's tree, copied and compiled once per run (the classes every task's tests run on);
+     * under gradeAll, a copy of the tree it compiled once for the class.
+     */
     private Path instructorTree() throws IOException {
         Path tree = work.resolve("instructor");
+        if (sharedTree != null && !Files.exists(tree)) {
+            sharedTree.copyTo(tree);
+        }
         if (!Files.exists(tree.resolve("classes"))) {
             ProjectTree.copy(project, tree, Map.of());
             CompileResult compiled = compile(tree);
@@ -284,7 +306,10 @@ public final class Grader implements Callable<Integer> {
     private List<TestOutcome> allFailed(Integer task, String why) throws IOException, InterruptedException {
         Path tree = instructorTree();
         List<TestOutcome> failed = new ArrayList<>();
-        for (TestOutcome t : tests(tree).inSandbox(sandbox).list(task)) {
+        // The list is the instructor's: under gradeAll, made once for the class.
+        List<TestOutcome> listed = sharedTree != null ? sharedTree.tests(task, () -> tests(tree).inSandbox(sandbox).list(task))
+                : tests(tree).inSandbox(sandbox).list(task);
+        for (TestOutcome t : listed) {
             failed.add(t.failedWith(why));
         }
         return failed;

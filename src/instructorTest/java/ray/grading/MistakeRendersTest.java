@@ -1,0 +1,54 @@
+package ray.grading;
+
+import static org.junit.Assert.assertArrayEquals;
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+
+import java.io.File;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import ray.grading.VariantFolders.Variant;
+
+/**
+ * The known mistakes' renders that gradeAll keeps for the class: a mistake renders a scene once, in
+ * the tree it was given (never in the grading's own tree), and every later grading gets the same
+ * picture without rendering again.
+ */
+public class MistakeRendersTest {
+    @Rule
+    public final TemporaryFolder folder = new TemporaryFolder();
+
+    private static final Path PROJECT = Path.of(".").toAbsolutePath().normalize();
+    /** The solution's classes and the libraries, as the tests run with them. */
+    private static final String CLASSPATH = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
+            .collect(Collectors.joining(File.pathSeparator));
+
+    @Test(timeout = 300_000)
+    public void eachMistakeRendersEachSceneOnceForTheClass() throws Exception {
+        Map<String, Integer> studentFiles = StudentFiles.in(PROJECT);
+        Variant farRoot = VariantFolders.in(PROJECT, studentFiles).stream()
+                .filter(v -> v.folder.getFileName().toString().equals("sphere-far-root")).findFirst().orElseThrow();
+        VariantMistakes.Renders renders = new VariantMistakes.Renders(PROJECT, CLASSPATH);
+        // The grading's tree does not even exist: the mistake renders in the project it was given.
+        Path gradingTree = folder.getRoot().toPath().resolve("no-such-tree");
+        Path first = folder.getRoot().toPath().resolve("first");
+        Map<String, byte[]> once = renders.of(gradingTree, farRoot, List.of("scenes/one-sphere.xml"), "not used", first);
+        assertEquals(List.of("scenes/one-sphere.xml"), List.copyOf(once.keySet()));
+        assertTrue(Files.isRegularFile(first.resolve("renders/one-sphere.png")));
+        assertArrayEquals(Files.readAllBytes(first.resolve("renders/one-sphere.png")), once.get("scenes/one-sphere.xml"));
+
+        Path second = folder.getRoot().toPath().resolve("second");
+        Map<String, byte[]> again = renders.of(gradingTree, farRoot, List.of("scenes/one-sphere.xml"), "not used", second);
+        assertFalse("rendered again", Files.exists(second));
+        assertArrayEquals(once.get("scenes/one-sphere.xml"), again.get("scenes/one-sphere.xml"));
+        assertFalse(Files.exists(gradingTree));
+    }
+}
