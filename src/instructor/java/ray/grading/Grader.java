@@ -168,7 +168,7 @@ public final class Grader implements Callable<Integer> {
     private void writeResults(Map<String, Object> results, Path resultsFile) throws IOException {
         String expected = GradescopeResults.json(results);
         for (Path file : resultsCopy == null ? List.of(resultsFile) : List.of(resultsFile, resultsCopy)) {
-            GradescopeResults.write(results, file);
+            ReadableFiles.writeAtomically(file, expected);
             if (!Files.readString(file, StandardCharsets.UTF_8).equals(expected)) {
                 throw new IOException(file + " changed after the grader wrote it: something else writes there");
             }
