@@ -123,6 +123,12 @@ final class GradleDenylist {
                 Pattern.compile("\\b(html|xml|junitXml|csv)\\.enabled\\b"),
                 Where.ANYWHERE, "Upgrading from 7.x: Report.enabled is removed in 8.0; use required",
                 "test.reports.html.enabled = false"));
+        list.add(new Entry("a build-finished hook or a replaced logger",
+                Pattern.compile("\\b(buildFinished|useLogger)\\s*[{(]"),
+                Where.ANYWHERE, "Gradle 8.x and 9.x API: Gradle.buildFinished and BuildListener.buildFinished are deprecated "
+                        + "(not supported with the configuration cache, which 9 prefers); Gradle.useLogger is deprecated in 9 "
+                        + "and removed in 10",
+                "gradle.buildFinished { println 'done' }"));
         return List.copyOf(list);
     }
 }

@@ -24,9 +24,11 @@ import ray.testing.StudentTask;
  * build/reports/render-diff/index.html, with your image, the reference and a heat map.
  *
  * <p>A render runs every task the scene uses, so a failure says whose code is to blame: a scene
- * that does not load is the scene file's fault; a render that throws is the fault of the task whose
- * file threw; and a render that differs names the other tasks it needs that fail their
- * {@link BasicChecks basic check} (still unfinished), rather than blame this test's task for them.
+ * that does not load is the scene file's fault; a render that throws is reported by
+ * {@link ray.testing.StudentTaskRule} under the task whose file threw; and a render that differs
+ * names every task the scene uses and those that fail their {@link BasicChecks basic check} (still
+ * unfinished). The test summary then lists a differing render under a task whose unit tests fail,
+ * or under "Renders" when every task it uses passes them (gradle/test-report.gradle).
  * Only the image decides whether the test passes.
  *
  * <p>Subclasses, one per task, give the scenes ({@link RenderScenes#TASKS}), the points and the rule.
@@ -65,19 +67,9 @@ public abstract class RenderTestBase {
                     + "\n    Fix the scene file, or restore it from the handout; this test judges your code once it loads.");
         }
         BufferedImage reference = PngReader.read(referenceFile);
-        BufferedImage yours;
-        try {
-            yours = RenderScenes.render(loaded);
-        } catch (RuntimeException | StackOverflowError e) {
-            StudentTask thrower = StudentFrames.taskThatThrew(e);
-            if (thrower != null && thrower != task()) {
-                throw new NotThisTasksFault("rendering " + shown + " stopped: " + thrower.label() + " threw " + e
-                        + StudentFrames.where(e) + ".\n    Work on the TODO(Task " + thrower.number + ") comments in "
-                        + String.join(" and ", thrower.files) + "; this test can judge your " + task().label()
-                        + " code once the render runs.");
-            }
-            throw e;
-        }
+        // An exception from a student file propagates: StudentTaskRule reports it under the task whose
+        // file threw, with the same first line as that task's unit tests, so the summary names it once.
+        BufferedImage yours = RenderScenes.render(loaded);
         ImageDiff.Result result = ImageDiff.compare(reference, yours);
         RenderDiffReport.ran(getClass(), scene, result.passed());
         if (result.passed()) {
@@ -85,18 +77,15 @@ public abstract class RenderTestBase {
         }
         String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference);
         String differs = shown + " does not look like " + referenceShown + ": " + result.summary();
-        String see = "\n    See your image, the reference and where they differ in " + report;
+        String see = "\n    " + usesLine(loaded) + "\n    See your image, the reference and where they differ in " + report;
         List<String> unfinished = new ArrayList<>();
         List<String> unfinishedTasks = new ArrayList<>();
-        List<String> fine = new ArrayList<>();
         for (StudentTask other : BasicChecks.tasksOf(loaded)) {
             if (other == task()) {
                 continue;
             }
             String problem = BasicChecks.problem(other, loaded);
-            if (problem == null) {
-                fine.add("Task " + other.number);
-            } else {
+            if (problem != null) {
                 unfinished.add(other.label() + ": " + problem);
                 unfinishedTasks.add(other.label());
             }
@@ -115,11 +104,21 @@ public abstract class RenderTestBase {
         }
         if (!unfinished.isEmpty()) {
             message.append("\n    Unfinished too: ").append(String.join("; ", unfinished));
-        } else if (!fine.isEmpty()) {
-            message.append(".\n    The scene also runs ").append(String.join(", ", fine))
-                    .append(", whose basic checks pass; their unit tests narrow a difference down further");
         }
         fail(message + see);
+    }
+
+    /**
+     * "The scene uses Task 1 (Camera rays), Task 2 (Sphere) and Task 4 (Group)." The test summary reads
+     * this line to list a differing render under a task whose unit tests fail, or under "Renders" when
+     * none does (gradle/test-report.gradle), so its wording is part of that contract.
+     */
+    static String usesLine(Scene scene) {
+        List<String> labels = new ArrayList<>();
+        for (StudentTask t : BasicChecks.tasksOf(scene)) {
+            labels.add(t.label());
+        }
+        return "The scene uses " + inWords(labels) + ".";
     }
 
     /** "A", "A and B", "A, B and C". */

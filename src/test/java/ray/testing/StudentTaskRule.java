@@ -70,7 +70,13 @@ public final class StudentTaskRule implements TestRule {
                     UnfinishedTasks.didNotFinish(task, bonus, test);
                     throw explained(label, "took longer than " + seconds + " s: is there a loop that never ends?", e);
                 } catch (Exception | VirtualMachineError | LinkageError e) {
-                    throw explained(label, whatWentWrong(e), e);
+                    // Reported under the task whose file threw, whichever task's test ran it (a render
+                    // test runs several), with a first line that does not depend on the test: the
+                    // summary then names one exception once (gradle/test-report.gradle).
+                    StudentTask thrower = StudentFrames.taskThatThrew(e instanceof ExceptionInInitializerError && e.getCause() != null ? e.getCause() : e);
+                    StudentTask blamed = thrower == null ? task : thrower;
+                    String blamedLabel = "[" + blamed.label() + (bonus ? ", bonus" : "") + "] ";
+                    throw explained(blamedLabel, whatWentWrong(e), e, blamed);
                 }
             }
         };
@@ -107,14 +113,13 @@ public final class StudentTaskRule implements TestRule {
      * for its stack trace.
      */
     private AssertionError explained(String label, String message, Throwable cause) {
-        AssertionError error = new AssertionError(label + message + workOn(), cause instanceof AssertionError ? null : cause);
-        error.setStackTrace(cause.getStackTrace());
-        return error;
+        return explained(label, message, cause, task);
     }
 
-    /** The line under every failure: where to work. */
-    private String workOn() {
-        return workOn(task);
+    private static AssertionError explained(String label, String message, Throwable cause, StudentTask blamed) {
+        AssertionError error = new AssertionError(label + message + workOn(blamed), cause instanceof AssertionError ? null : cause);
+        error.setStackTrace(cause.getStackTrace());
+        return error;
     }
 
     static String workOn(StudentTask task) {

@@ -1,15 +1,15 @@
-package ray.endtoend;
+package ray.testing;
 
 import java.nio.file.Path;
 import ray.testing.StudentTask;
 
 /** Which student file an exception came from: the first frame of its stack trace in a task's file. */
-final class StudentFrames {
+public final class StudentFrames {
     private StudentFrames() {
     }
 
     /** The task whose file holds the deepest frame of {@code e} in any task's file, or null. */
-    static StudentTask taskThatThrew(Throwable e) {
+    public static StudentTask taskThatThrew(Throwable e) {
         for (StackTraceElement frame : e.getStackTrace()) {
             StudentTask task = taskOf(frame);
             if (task != null) {
@@ -20,7 +20,7 @@ final class StudentFrames {
     }
 
     /** " at Sphere.java:57" for that frame, or "" when no task's file is on the stack. */
-    static String where(Throwable e) {
+    public static String where(Throwable e) {
         for (StackTraceElement frame : e.getStackTrace()) {
             if (taskOf(frame) != null) {
                 return " at " + frame.getFileName() + ":" + frame.getLineNumber();
