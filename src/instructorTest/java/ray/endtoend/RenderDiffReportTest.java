@@ -54,9 +54,14 @@ public class RenderDiffReportTest {
         report.record(SphereRenderTest.class, "far-tiny-sphere", false);
         // The test reads the scene by its absolute path; the page names it as typed in the project folder.
         String location = report.addEntry(SphereRenderTest.class, "far-tiny-sphere", ProjectFolder.resolve("scenes", "hard", "far-tiny-sphere.xml"),
-                StudentTask.SPHERE, ImageDiff.compare(white, black), black, white);
-        assertTrue(location, location.endsWith("index.html"));
+                StudentTask.SPHERE, ImageDiff.compare(white, black), black, white,
+                "The scene uses Task 1 (Camera rays), Task 2 (Sphere) and Task 4 (Group).\nA second finding.");
+        // The message links to the scene's own section of the page.
+        assertTrue(location, location.endsWith("index.html#SphereRenderTest-far-tiny-sphere"));
         String html = page(report);
+        assertTrue(html, html.contains("<section id=\"SphereRenderTest-far-tiny-sphere\">"));
+        assertTrue(html, html.contains("<p>The scene uses Task 1 (Camera rays), Task 2 (Sphere) and Task 4 (Group).</p>\n<p>A second finding.</p>"));
+        assertTrue(html, html.contains("Graded under Task 2 (Sphere) by <code>ray.endtoend.SphereRenderTest</code>"));
         assertTrue(html, html.contains("render -o out scenes/hard/far-tiny-sphere.xml\""));
         assertFalse(html, html.contains("scenes/far-tiny-sphere.xml"));
         assertTrue(html, html.contains("1 of 2 scenes rendered in the last run differ"));

@@ -54,7 +54,8 @@ public class RenderBlameTest {
         List<String> blamed = outcomes.stream().filter(o -> !o.passed()).map(o -> o.failure).collect(Collectors.toList());
         assertFalse("no camera render met the throwing sphere", blamed.isEmpty());
         for (String failure : blamed) {
-            assertTrue(failure, failure.contains("Task 2 (Sphere) threw java.lang.IllegalStateException: unfinished at Sphere.java:"));
+            // Labelled with the task whose file threw, in the words of that task's own unit tests.
+            assertTrue(failure, failure.contains("[Task 2 (Sphere)] your code threw java.lang.IllegalStateException: unfinished at Sphere.java:"));
             assertTrue(failure, failure.contains("Work on the TODO(Task 2) comments in src/main/java/ray/surface/Sphere.java"));
             assertFalse(failure, failure.contains("Work on the TODO(Task 1)"));
         }

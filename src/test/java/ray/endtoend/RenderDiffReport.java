@@ -71,9 +71,13 @@ final class RenderDiffReport {
         build().record(testClass, scene, passed);
     }
 
+    /**
+     * Adds a failed scene to the report; {@code findings} (which tasks the scene uses, what the
+     * differing pixels show) heads its entry, as it heads the failure message.
+     */
     static String add(Class<?> testClass, String scene, Path sceneFile, StudentTask task, ImageDiff.Result result,
-            BufferedImage yours, BufferedImage reference) {
-        return build().addEntry(testClass, scene, sceneFile, task, result, yours, reference);
+            BufferedImage yours, BufferedImage reference, String findings) {
+        return build().addEntry(testClass, scene, sceneFile, task, result, yours, reference, findings);
     }
 
     synchronized void clearEntries(Class<?> testClass) {
@@ -106,7 +110,7 @@ final class RenderDiffReport {
 
     /** Adds a failed scene to the report and returns the page's location, to name in the failure message. */
     synchronized String addEntry(Class<?> testClass, String scene, Path sceneFile, StudentTask task,
-            ImageDiff.Result result, BufferedImage yours, BufferedImage reference) {
+            ImageDiff.Result result, BufferedImage yours, BufferedImage reference, String findings) {
         Path classFolder = folder.resolve(testClass.getSimpleName());
         try {
             Files.createDirectories(classFolder);
@@ -121,7 +125,7 @@ final class RenderDiffReport {
             // nor the absolute path the test read), with / on every system.
             entry.setProperty("file", RenderScenes.shown(sceneFile).toString().replace('\\', '/'));
             entry.setProperty("task", task.label());
-            entry.setProperty("files", String.join(" and ", task.files));
+            entry.setProperty("findings", findings);
             entry.setProperty("testClass", testClass.getName());
             entry.setProperty("summary", result.summary());
             entry.setProperty("heatMap", Boolean.toString(result.sameSize()));
@@ -133,7 +137,7 @@ final class RenderDiffReport {
             // The test fails anyway; a report that cannot be written must not hide why.
             return "(the report could not be written: " + e + ")";
         }
-        return index().toAbsolutePath().toUri().toString();
+        return index().toAbsolutePath().toUri() + "#" + sectionId(testClass.getSimpleName(), scene);
     }
 
     /** Rebuilds index.html from every entry under the report folder, by test class and scene. */
@@ -173,8 +177,9 @@ final class RenderDiffReport {
                     .append(" from the reference images in <code>scenes/reference</code>. A scene passes when at most ")
                     .append(percent(ImageDiff.MAX_SHARE)).append(" of its pixels differ by more than ")
                     .append(ImageDiff.TOLERANCE_LEVELS).append(" levels (of 255) in some channel; docs/grading.md explains why.</p>\n")
-                    .append("<p>Each scene is graded under one task, but a render runs every task the scene uses; the ")
-                    .append("test's failure message says which of them are unfinished, and each task's unit tests narrow a difference down.</p>\n")
+                    .append("<p>A render runs every task its scene uses, so start with a task whose unit tests fail: the ")
+                    .append("test summary lists the scene under it. When all of them pass, the surfaces the differing pixels ")
+                    .append("show and <code>ray1 trace</code> on the worst pixel say where your code and the reference part.</p>\n")
                     .append("<p class=\"ramp\">Heat map: <span style=\"background:#000\"></span> equal, ")
                     .append("<span style=\"background:#0000a0\"></span> within the tolerance, ")
                     .append("<span style=\"background:#c00000\"></span> <span style=\"background:#ff8000\"></span> ")
@@ -188,11 +193,16 @@ final class RenderDiffReport {
             }
             String classFolder = file.getParent().getFileName().toString();
             String scene = entry.getProperty("scene", "?");
-            html.append("<section id=\"").append(escape(classFolder + "-" + scene)).append("\">\n<h2 class=\"fail\">")
-                    .append(escape(scene)).append("</h2>\n<p>").append(escape(entry.getProperty("task", "")))
-                    .append(": work in <code>").append(escape(entry.getProperty("files", ""))).append("</code>. Test class <code>")
-                    .append(escape(entry.getProperty("testClass", ""))).append("</code>.</p>\n<p>")
-                    .append(escape(entry.getProperty("summary", ""))).append("</p>\n<div class=\"row\">\n");
+            html.append("<section id=\"").append(escape(sectionId(classFolder, scene))).append("\">\n<h2 class=\"fail\">")
+                    .append(escape(scene)).append("</h2>\n");
+            for (String finding : entry.getProperty("findings", "").split("\n")) {
+                if (!finding.isBlank()) {
+                    html.append("<p>").append(escape(finding.strip())).append("</p>\n");
+                }
+            }
+            html.append("<p>").append(escape(entry.getProperty("summary", ""))).append("</p>\n<p>Graded under ")
+                    .append(escape(entry.getProperty("task", ""))).append(" by <code>")
+                    .append(escape(entry.getProperty("testClass", ""))).append("</code>.</p>\n<div class=\"row\">\n");
             figure(html, classFolder + "/" + scene + "-yours.png", "Your render");
             figure(html, classFolder + "/" + scene + "-reference.png", "Reference");
             if (Boolean.parseBoolean(entry.getProperty("heatMap"))) {
@@ -213,6 +223,11 @@ final class RenderDiffReport {
         } finally {
             Files.deleteIfExists(temporary);
         }
+    }
+
+    /** The id of a scene's section on the page, the anchor a failure message links to. */
+    private static String sectionId(String testClassName, String scene) {
+        return testClassName + "-" + scene;
     }
 
     private static void figure(StringBuilder html, String src, String caption) {

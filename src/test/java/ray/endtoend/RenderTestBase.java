@@ -75,9 +75,10 @@ public abstract class RenderTestBase {
         if (result.passed()) {
             return;
         }
-        String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference);
+        String findings = usesLine(loaded);
+        String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference, findings);
         String differs = shown + " does not look like " + referenceShown + ": " + result.summary();
-        String see = "\n    " + usesLine(loaded) + "\n    See your image, the reference and where they differ in " + report;
+        String see = "\n    " + findings.replace("\n", "\n    ") + "\n    See your image, the reference and where they differ in " + report;
         List<String> unfinished = new ArrayList<>();
         List<String> unfinishedTasks = new ArrayList<>();
         for (StudentTask other : BasicChecks.tasksOf(loaded)) {
