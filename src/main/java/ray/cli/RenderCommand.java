@@ -34,6 +34,13 @@ public final class RenderCommand implements Callable<Integer> {
      */
     public static final String REFERENCE_MARKER = ".references";
 
+    /**
+     * The folder inside DIR that {@code --camera-rays} writes its pictures to: they are no renders,
+     * so they never replace a scene's render in DIR/&lt;scene&gt;.png (a student checking Task 1 would
+     * otherwise lose the images that show the other tasks' work).
+     */
+    public static final String CAMERA_RAYS_FOLDER = "camera-rays";
+
     @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "Output folder (default: ${DEFAULT-VALUE}).")
     Path output = Path.of("out");
 
@@ -60,7 +67,8 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--camera-rays", description = "Instead of rendering, color each pixel by where its camera ray crosses "
             + "the image plane (Task 1's picture, before any surface works): correct rays shade from black at the lower left "
             + "to red at the lower right, green at the upper left and yellow at the upper right; blue marks rays off their "
-            + "camera's rule, magenta rays that cannot see anything (the stubs').")
+            + "camera's rule, magenta rays that cannot see anything (the stubs'). The pictures go to DIR/" + CAMERA_RAYS_FOLDER
+            + "/<scene-name>.png, beside the renders, which they never replace.")
     boolean cameraRays;
 
     @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the figures as JSON to this file.")
@@ -83,6 +91,10 @@ public final class RenderCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         String outputProblem = OptionChecks.outputFolderProblem(output, "render somewhere else, e.g. -o out");
+        Path folder = cameraRays ? output.resolve(CAMERA_RAYS_FOLDER) : output;
+        if (outputProblem == null && cameraRays) {
+            outputProblem = OptionChecks.outputFolderProblem(folder, "render somewhere else, e.g. -o out");
+        }
         if (outputProblem != null) {
             err.println("error: " + outputProblem);
             return 1;
@@ -99,14 +111,14 @@ public final class RenderCommand implements Callable<Integer> {
             String name = SceneFiles.nameOf(file);
             Path previous = written.putIfAbsent(name, file);
             if (previous != null) {
-                err.println("error: " + file + ": renders to " + output.resolve(name + ".png") + ", as " + previous + " does; rename one");
+                err.println("error: " + file + ": renders to " + folder.resolve(name + ".png") + ", as " + previous + " does; rename one");
                 failures++;
                 continue;
             }
             try {
                 Scene scene = SceneWarnings.load(file, err);
                 if (cameraRays) {
-                    writeCameraRays(scene, name, out);
+                    writeCameraRays(scene, folder.resolve(name + ".png"), name, out);
                 } else {
                     stats.add(render(scene, name, acceleration, out, err));
                 }
@@ -146,8 +158,7 @@ public final class RenderCommand implements Callable<Integer> {
         return s;
     }
 
-    private void writeCameraRays(Scene scene, String name, PrintWriter out) throws IOException {
-        Path target = output.resolve(name + ".png");
+    private static void writeCameraRays(Scene scene, Path target, String name, PrintWriter out) throws IOException {
         PngWriter.write(CameraRayColors.render(scene.getCamera(), scene.getWidth(), scene.getHeight()), 1, target);
         out.println(name + ": camera rays, " + scene.getWidth() + "x" + scene.getHeight() + " -> " + target);
     }
