@@ -19,13 +19,19 @@ import ray.render.RenderResult;
 import ray.render.RenderPlan;
 import ray.render.Renderer;
 import ray.render.SamplePattern;
+import ray.render.TaskProbes;
 import ray.scene.Scene;
 import ray.scene.SceneException;
 import ray.scene.SceneFiles;
 
-/** {@code ray1 render}: renders scenes to PNG files, per scene a line of figures and a line of its render plan. */
+/**
+ * {@code ray1 render}: renders scenes to PNG files, per scene a line of figures and a line of its
+ * render plan; while any task is still the handout's stub, the run ends with one line that names
+ * those tasks and where to start ({@link TaskProbes}).
+ */
 @Command(name = "render", mixinStandardHelpOptions = true,
-        description = "Renders each scene (a folder means every *.xml in it, recursively) to DIR/<scene-name>.png.")
+        description = {"Renders each scene (a folder means every *.xml in it, recursively) to DIR/<scene-name>.png.",
+                "While any task is still the handout's stub, the run ends with a line naming those tasks and where to start."})
 public final class RenderCommand implements Callable<Integer> {
     /**
      * The file that marks a folder of reference renders (scenes/reference, written by the
@@ -137,6 +143,14 @@ public final class RenderCommand implements Callable<Integer> {
         }
         if (failures > 0) {
             err.println(failures + " of " + files.size() + " scenes failed");
+            err.flush();
+        }
+        // Last, once per run, whatever the scenes: which tasks are still the handout's stubs (the reason
+        // a first render shows only the background) and where to start.
+        String stubs = TaskProbes.stillStubsLine(TaskProbes.stubs());
+        if (stubs != null) {
+            out.println(stubs);
+            out.flush();
         }
         return failures == 0 ? 0 : 1;
     }
