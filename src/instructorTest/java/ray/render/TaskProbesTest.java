@@ -87,6 +87,13 @@ public class TaskProbesTest {
                 }
             }
             assertEquals(task.label(), expected, stubsWith(folders));
+            // The line the render ends with names exactly this task.
+            String line = lineWith(folders);
+            assertEquals(line, TaskProbes.stillStubsLine(partsNamed(expected)), line);
+            String named = line.substring(0, line.indexOf(". "));
+            for (StudentTask other : StudentTask.values()) {
+                assertEquals(line, other == task, named.contains("Task " + other.number + " ("));
+            }
         }
         Set<String> all = Arrays.stream(Part.values()).map(Part::name).collect(Collectors.toCollection(TreeSet::new));
         assertEquals(all, stubsWith(new ArrayList<>(STUB_CLASSES.values())));
@@ -162,6 +169,21 @@ public class TaskProbesTest {
             Set<?> stubs = (Set<?>) probes.getMethod("stubs", long.class).invoke(null, limitMillis);
             return stubs.stream().map(p -> ((Enum<?>) p).name()).collect(Collectors.toCollection(TreeSet::new));
         }
+    }
+
+    /** The line {@code ray1 render} ends with when {@code folders}' classes replace the solution's, or null. */
+    private static String lineWith(List<Path> folders) throws Exception {
+        try (URLClassLoader loader = StubBuild.loader(folders)) {
+            Class<?> probes = loader.loadClass(TaskProbes.class.getName());
+            Object stubs = probes.getMethod("stubs").invoke(null);
+            return (String) probes.getMethod("stillStubsLine", Set.class).invoke(null, stubs);
+        }
+    }
+
+    private static Set<Part> partsNamed(Set<String> names) {
+        Set<Part> parts = EnumSet.noneOf(Part.class);
+        names.forEach(name -> parts.add(Part.valueOf(name)));
+        return parts;
     }
 
     private static Object probe(URLClassLoader loader, String part) throws Exception {
