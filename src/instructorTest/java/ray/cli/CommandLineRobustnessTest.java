@@ -55,6 +55,16 @@ public class CommandLineRobustnessTest {
         assertEquals("mine", Files.readString(file));
     }
 
+    @Test
+    public void aFileWhereTheCameraRaysFolderGoesIsRefusedAndLeftAlone() throws Exception {
+        Path out = root.resolve("out");
+        Path file = CliRun.write(out.resolve("camera-rays"), "mine");
+        CliRun run = CliRun.of("render", "--camera-rays", "-o", out.toString(), scene.toString());
+        assertEquals(run.toString(), 1, run.status);
+        assertEquals(run.toString(), "error: " + file + " is a file; expected a folder (-o DIR)", run.err.strip());
+        assertEquals("mine", Files.readString(file));
+    }
+
     /** A folder where the PNG should go cannot be replaced by it: an I/O failure the command did not foresee. */
     @Test
     public void unexpectedFailureIsOneLineAndVerboseAddsTheStackTrace() throws Exception {

@@ -2,6 +2,7 @@ package ray.cli;
 
 import static org.junit.Assert.assertArrayEquals;
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 
 import com.google.gson.JsonArray;
@@ -11,6 +12,7 @@ import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.regex.Pattern;
 import org.junit.Before;
@@ -62,8 +64,10 @@ public class RenderCommandTest {
         Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
         CliRun run = CliRun.of("render", "--camera-rays", "-o", output.toString(), scene.toString());
         assertEquals(run.toString(), 0, run.status);
-        assertEquals(run.toString(), "floor: camera rays, 4x4 -> " + output.resolve("floor.png") + "\n", run.out);
-        BufferedImage png = PngReader.read(output.resolve("floor.png"));
+        Path picture = output.resolve("camera-rays/floor.png");
+        assertEquals(run.toString(), "floor: camera rays, 4x4 -> " + picture + "\n", run.out);
+        assertFalse("the camera-ray picture went to the render's place", Files.exists(output.resolve("floor.png")));
+        BufferedImage png = PngReader.read(picture);
         // Pixel (i, j) is seen at ((i + ½)/4, (j + ½)/4): red and green 0.125, 0.375, 0.625, 0.875, which
         // the PNG stores as floor(255·x^(1/2.2) + ½) = 99, 163, 206, 240. PNG row 0 is the top (j = 3).
         int[] level = {99, 163, 206, 240};
@@ -72,6 +76,24 @@ public class RenderCommandTest {
                 assertEquals("pixel " + i + ", " + j, (level[i] << 16) | (level[j] << 8), png.getRGB(i, 3 - j) & 0xffffff);
             }
         }
+    }
+
+    /** A student checking Task 1 keeps the renders that show the other tasks' work: the pictures go to a folder of their own. */
+    @Test
+    public void cameraRaysNeverReplaceTheRenders() throws Exception {
+        Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));
+        CliRun render = CliRun.of("render", "-o", output.toString(), scene.toString());
+        assertEquals(render.toString(), 0, render.status);
+        byte[] rendered = Files.readAllBytes(output.resolve("floor.png"));
+        CliRun rays = CliRun.of("render", "--camera-rays", "-o", output.toString(), scene.toString());
+        assertEquals(rays.toString(), 0, rays.status);
+        assertArrayEquals("--camera-rays changed the render", rendered, Files.readAllBytes(output.resolve("floor.png")));
+        assertFalse("the camera-ray picture is the render",
+                Arrays.equals(rendered, Files.readAllBytes(output.resolve("camera-rays/floor.png"))));
+        // And the other way round: a render leaves the camera-ray pictures alone.
+        byte[] picture = Files.readAllBytes(output.resolve("camera-rays/floor.png"));
+        assertEquals(0, CliRun.of("render", "-o", output.toString(), scene.toString()).status);
+        assertArrayEquals(picture, Files.readAllBytes(output.resolve("camera-rays/floor.png")));
     }
 
     @Test

@@ -1,20 +1,16 @@
 package ray.variants;
 
-import java.io.ByteArrayOutputStream;
 import java.io.File;
 import java.io.IOException;
 import java.lang.annotation.Annotation;
 import java.lang.reflect.Modifier;
 import java.net.URL;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
-import javax.tools.JavaCompiler;
-import javax.tools.ToolProvider;
 import org.junit.runner.Description;
 import org.junit.runner.JUnitCore;
 import org.junit.runner.Request;
@@ -114,14 +110,9 @@ final class VariantGrading {
         if (sources.isEmpty()) {
             throw new IllegalStateException(variant.folder() + " holds no .java file");
         }
-        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
-        List<String> args = new ArrayList<>(List.of("--release", "17", "-encoding", "UTF-8", "-proc:none",
-                "-classpath", String.join(File.pathSeparator, classPath()), "-d", out.toString()));
-        args.addAll(sources);
-        ByteArrayOutputStream messages = new ByteArrayOutputStream();
-        int status = javac.run(null, messages, messages, args.toArray(new String[0]));
-        if (status != 0) {
-            throw new IllegalStateException("variant " + variant + " does not compile:\n" + messages.toString(StandardCharsets.UTF_8));
+        String errors = StubBuild.javac(sources, out);
+        if (errors != null) {
+            throw new IllegalStateException("variant " + variant + " does not compile:\n" + errors);
         }
         return out;
     }

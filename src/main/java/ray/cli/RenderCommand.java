@@ -19,13 +19,19 @@ import ray.render.RenderResult;
 import ray.render.RenderPlan;
 import ray.render.Renderer;
 import ray.render.SamplePattern;
+import ray.render.TaskProbes;
 import ray.scene.Scene;
 import ray.scene.SceneException;
 import ray.scene.SceneFiles;
 
-/** {@code ray1 render}: renders scenes to PNG files, per scene a line of figures and a line of its render plan. */
+/**
+ * {@code ray1 render}: renders scenes to PNG files, per scene a line of figures and a line of its
+ * render plan; while any task is still the handout's stub, the run ends with one line that names
+ * those tasks and where to start ({@link TaskProbes}).
+ */
 @Command(name = "render", mixinStandardHelpOptions = true,
-        description = "Renders each scene (a folder means every *.xml in it, recursively) to DIR/<scene-name>.png.")
+        description = {"Renders each scene (a folder means every *.xml in it, recursively) to DIR/<scene-name>.png.",
+                "While any task is still the handout's stub, the run ends with a line naming those tasks and where to start."})
 public final class RenderCommand implements Callable<Integer> {
     /**
      * The file that marks a folder of reference renders (scenes/reference, written by the
@@ -33,6 +39,13 @@ public final class RenderCommand implements Callable<Integer> {
      * student's render can never overwrite the images it is graded against.
      */
     public static final String REFERENCE_MARKER = ".references";
+
+    /**
+     * The folder inside DIR that {@code --camera-rays} writes its pictures to: they are no renders,
+     * so they never replace a scene's render in DIR/&lt;scene&gt;.png (a student checking Task 1 would
+     * otherwise lose the images that show the other tasks' work).
+     */
+    public static final String CAMERA_RAYS_FOLDER = "camera-rays";
 
     @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "Output folder (default: ${DEFAULT-VALUE}).")
     Path output = Path.of("out");
@@ -60,7 +73,8 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--camera-rays", description = "Instead of rendering, color each pixel by where its camera ray crosses "
             + "the image plane (Task 1's picture, before any surface works): correct rays shade from black at the lower left "
             + "to red at the lower right, green at the upper left and yellow at the upper right; blue marks rays off their "
-            + "camera's rule, magenta rays that cannot see anything (the stubs').")
+            + "camera's rule, magenta rays that cannot see anything (the stubs'). The pictures go to DIR/" + CAMERA_RAYS_FOLDER
+            + "/<scene-name>.png, beside the renders, which they never replace.")
     boolean cameraRays;
 
     @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the figures as JSON to this file.")
@@ -83,6 +97,10 @@ public final class RenderCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         String outputProblem = OptionChecks.outputFolderProblem(output, "render somewhere else, e.g. -o out");
+        Path folder = cameraRays ? output.resolve(CAMERA_RAYS_FOLDER) : output;
+        if (outputProblem == null && cameraRays) {
+            outputProblem = OptionChecks.outputFolderProblem(folder, "render somewhere else, e.g. -o out");
+        }
         if (outputProblem != null) {
             err.println("error: " + outputProblem);
             return 1;
@@ -99,14 +117,14 @@ public final class RenderCommand implements Callable<Integer> {
             String name = SceneFiles.nameOf(file);
             Path previous = written.putIfAbsent(name, file);
             if (previous != null) {
-                err.println("error: " + file + ": renders to " + output.resolve(name + ".png") + ", as " + previous + " does; rename one");
+                err.println("error: " + file + ": renders to " + folder.resolve(name + ".png") + ", as " + previous + " does; rename one");
                 failures++;
                 continue;
             }
             try {
                 Scene scene = SceneWarnings.load(file, err);
                 if (cameraRays) {
-                    writeCameraRays(scene, name, out);
+                    writeCameraRays(scene, folder.resolve(name + ".png"), name, out);
                 } else {
                     stats.add(render(scene, name, acceleration, out, err));
                 }
@@ -125,6 +143,14 @@ public final class RenderCommand implements Callable<Integer> {
         }
         if (failures > 0) {
             err.println(failures + " of " + files.size() + " scenes failed");
+            err.flush();
+        }
+        // Last, once per run, whatever the scenes: which tasks are still the handout's stubs (the reason
+        // a first render shows only the background) and where to start.
+        String stubs = TaskProbes.stillStubsLine(TaskProbes.stubs());
+        if (stubs != null) {
+            out.println(stubs);
+            out.flush();
         }
         return failures == 0 ? 0 : 1;
     }
@@ -146,8 +172,7 @@ public final class RenderCommand implements Callable<Integer> {
         return s;
     }
 
-    private void writeCameraRays(Scene scene, String name, PrintWriter out) throws IOException {
-        Path target = output.resolve(name + ".png");
+    private static void writeCameraRays(Scene scene, Path target, String name, PrintWriter out) throws IOException {
         PngWriter.write(CameraRayColors.render(scene.getCamera(), scene.getWidth(), scene.getHeight()), 1, target);
         out.println(name + ": camera rays, " + scene.getWidth() + "x" + scene.getHeight() + " -> " + target);
     }

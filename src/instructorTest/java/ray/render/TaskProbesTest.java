@@ -1,0 +1,195 @@
+package ray.render;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertNull;
+import static org.junit.Assert.assertTrue;
+
+import java.net.URLClassLoader;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.stream.Collectors;
+import org.junit.BeforeClass;
+import org.junit.ClassRule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import ray.render.TaskProbes.Part;
+import ray.testing.StudentTask;
+import ray.variants.StubBuild;
+
+/**
+ * {@link TaskProbes}: the solution is never called a stub, the handout's stub of each student file
+ * is found (and nothing else), code that throws or takes too long is no stub, and the line
+ * {@code ray1 render} ends with says which tasks are stubs and where to start.
+ */
+public class TaskProbesTest {
+    @ClassRule
+    public static final TemporaryFolder FOLDER = new TemporaryFolder();
+
+    /** Each student file's handout stub, compiled alone into a class folder of its own. */
+    private static final Map<Part, Path> STUB_CLASSES = new java.util.EnumMap<>(Part.class);
+
+    @BeforeClass
+    public static void compileTheStubs() throws Exception {
+        for (Part part : Part.values()) {
+            STUB_CLASSES.put(part, StubBuild.compile(Map.of(part.file, StubBuild.stubOf(part.file)),
+                    FOLDER.getRoot().toPath().resolve("stub-" + part.className)));
+        }
+    }
+
+    @Test
+    public void theSolutionIsNoStubAndPassesEveryProbe() {
+        for (Part part : Part.values()) {
+            TaskProbes.Finding finding = TaskProbes.probe(part);
+            assertFalse(part + ": " + finding, finding.stub);
+            assertNull(part + ": " + finding, finding.problem);
+        }
+        assertEquals(EnumSet.noneOf(Part.class), TaskProbes.stubs());
+        assertNull(TaskProbes.stillStubsLine(EnumSet.noneOf(Part.class)));
+    }
+
+    /** The parts are the students' files, task by task, as the tests' StudentTask lists them. */
+    @Test
+    public void thePartsAreTheStudentFiles() {
+        for (StudentTask task : StudentTask.values()) {
+            List<String> files = Arrays.stream(Part.values()).filter(p -> p.task == task.number).map(p -> p.file)
+                    .collect(Collectors.toList());
+            assertEquals(task.label(), task.files, files);
+        }
+        assertEquals(Part.values().length, Arrays.stream(StudentTask.values()).mapToInt(t -> t.files.size()).sum());
+        for (Part part : Part.values()) {
+            assertTrue(part.file, part.file.endsWith("/" + part.className + ".java"));
+        }
+    }
+
+    @Test
+    public void eachStubIsFoundAndNothingElse() throws Exception {
+        for (Part part : Part.values()) {
+            assertEquals("with the stub of " + part.file, Set.of(part.name()), stubsWith(List.of(STUB_CLASSES.get(part))));
+        }
+    }
+
+    @Test
+    public void aTasksStubsTogetherAndTheWholeHandout() throws Exception {
+        for (StudentTask task : StudentTask.values()) {
+            List<Path> folders = new ArrayList<>();
+            Set<String> expected = new TreeSet<>();
+            for (Part part : Part.values()) {
+                if (part.task == task.number) {
+                    folders.add(STUB_CLASSES.get(part));
+                    expected.add(part.name());
+                }
+            }
+            assertEquals(task.label(), expected, stubsWith(folders));
+            // The line the render ends with names exactly this task.
+            String line = lineWith(folders);
+            assertEquals(line, TaskProbes.stillStubsLine(partsNamed(expected)), line);
+            String named = line.substring(0, line.indexOf(". "));
+            for (StudentTask other : StudentTask.values()) {
+                assertEquals(line, other == task, named.contains("Task " + other.number + " ("));
+            }
+        }
+        Set<String> all = Arrays.stream(Part.values()).map(Part::name).collect(Collectors.toCollection(TreeSet::new));
+        assertEquals(all, stubsWith(new ArrayList<>(STUB_CLASSES.values())));
+    }
+
+    /** Code that throws is written (only broken), and code that does not answer in time is not known to be a stub. */
+    @Test
+    public void codeThatThrowsOrTakesTooLongIsNoStub() throws Exception {
+        Path throwing = StubBuild.compile(Map.of(
+                Part.SPHERE.file, replace(Part.SPHERE, "return false;", "throw new IllegalStateException(\"unfinished\");"),
+                Part.REPEAT_TEXTURE.file, replace(Part.REPEAT_TEXTURE, "return Vec3.ZERO;", "return null;"),
+                Part.PERSPECTIVE_CAMERA.file, replace(Part.PERSPECTIVE_CAMERA, "return new Ray(viewPoint, w.negate(), 0, 0);",
+                        "throw new StackOverflowError();"),
+                // Answers as the stub does, but only after a second and a half.
+                Part.GROUP.file, replace(Part.GROUP, "return false;",
+                        "try { Thread.sleep(1500); } catch (InterruptedException e) { } return false;")),
+                FOLDER.getRoot().toPath().resolve("throwing"));
+        long began = System.nanoTime();
+        Set<String> stubs = stubsWith(List.of(throwing), 300);
+        long millis = (System.nanoTime() - began) / 1_000_000;
+        assertEquals(Set.of(), stubs);
+        assertTrue("the probes took " + millis + " ms", millis < 1400);
+        try (URLClassLoader loader = StubBuild.loader(List.of(throwing))) {
+            Object finding = probe(loader, "SPHERE");
+            assertEquals("it throws java.lang.IllegalStateException: unfinished", finding.getClass().getField("problem").get(finding));
+            assertEquals(false, finding.getClass().getField("stub").get(finding));
+        }
+    }
+
+    private static String replace(Part part, String stub, String instead) throws Exception {
+        String source = StubBuild.stubOf(part.file);
+        assertTrue(part.file + " has no '" + stub + "'", source.contains(stub));
+        return source.replace(stub, instead);
+    }
+
+    @Test
+    public void theLineNamesTheStubsAndWhereToStart() {
+        assertEquals("Still stubs: Task 1 (cameras), Task 2 (Sphere), Task 3 (Triangle), Task 4 (Group), Task 5 (textures),"
+                + " Task 6 (Cylinder, extra credit). Start with Task 1: the TODO(Task 1) comments in"
+                + " src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java (see docs/assignment.md).",
+                TaskProbes.stillStubsLine(EnumSet.allOf(Part.class)));
+        // After Task 1, docs/assignment.md suggests the group.
+        assertEquals("Still stubs: Task 2 (Sphere), Task 3 (Triangle), Task 4 (Group). Start with Task 4: the TODO(Task 4) comment in"
+                + " src/main/java/ray/surface/Group.java (see docs/assignment.md).",
+                TaskProbes.stillStubsLine(EnumSet.of(Part.SPHERE, Part.TRIANGLE, Part.GROUP)));
+        // Half a task is named by its file.
+        assertEquals("Still stubs: Task 1 (OrthographicCamera), Task 5 (ClampTexture). Start with Task 1: the TODO(Task 1) comment in"
+                + " src/main/java/ray/camera/OrthographicCamera.java (see docs/assignment.md).",
+                TaskProbes.stillStubsLine(EnumSet.of(Part.ORTHOGRAPHIC_CAMERA, Part.CLAMP_TEXTURE)));
+        assertEquals("Still stubs: Task 5 (textures), Task 6 (Cylinder, extra credit). Start with Task 5: the TODO(Task 5) comments in"
+                + " src/main/java/ray/shading/RepeatTexture.java and ClampTexture.java (see docs/assignment.md).",
+                TaskProbes.stillStubsLine(EnumSet.of(Part.REPEAT_TEXTURE, Part.CLAMP_TEXTURE, Part.CYLINDER)));
+        // The extra credit alone is offered, not prescribed.
+        assertEquals("Still a stub: Task 6 (Cylinder, extra credit). For the extra credit: the TODO(Task 6) comment in"
+                + " src/main/java/ray/surface/Cylinder.java (see docs/assignment.md).",
+                TaskProbes.stillStubsLine(EnumSet.of(Part.CYLINDER)));
+        for (Part part : Part.values()) {
+            String line = TaskProbes.stillStubsLine(EnumSet.of(part));
+            assertTrue(line, line.contains(part.file) && line.contains("TODO(Task " + part.task + ")"));
+            assertTrue(line, line.chars().allMatch(c -> c >= ' ' && c < 127));
+        }
+    }
+
+    /** The names of the parts that {@link TaskProbes#stubs()} finds with {@code folders}' classes in place of the solution's. */
+    private static Set<String> stubsWith(List<Path> folders) throws Exception {
+        return stubsWith(folders, TaskProbes.DEFAULT_LIMIT_MILLIS);
+    }
+
+    private static Set<String> stubsWith(List<Path> folders, long limitMillis) throws Exception {
+        try (URLClassLoader loader = StubBuild.loader(folders)) {
+            Class<?> probes = loader.loadClass(TaskProbes.class.getName());
+            assertFalse("the loader gave this JVM's TaskProbes", probes == TaskProbes.class);
+            Set<?> stubs = (Set<?>) probes.getMethod("stubs", long.class).invoke(null, limitMillis);
+            return stubs.stream().map(p -> ((Enum<?>) p).name()).collect(Collectors.toCollection(TreeSet::new));
+        }
+    }
+
+    /** The line {@code ray1 render} ends with when {@code folders}' classes replace the solution's, or null. */
+    private static String lineWith(List<Path> folders) throws Exception {
+        try (URLClassLoader loader = StubBuild.loader(folders)) {
+            Class<?> probes = loader.loadClass(TaskProbes.class.getName());
+            Object stubs = probes.getMethod("stubs").invoke(null);
+            return (String) probes.getMethod("stillStubsLine", Set.class).invoke(null, stubs);
+        }
+    }
+
+    private static Set<Part> partsNamed(Set<String> names) {
+        Set<Part> parts = EnumSet.noneOf(Part.class);
+        names.forEach(name -> parts.add(Part.valueOf(name)));
+        return parts;
+    }
+
+    private static Object probe(URLClassLoader loader, String part) throws Exception {
+        Class<?> probes = loader.loadClass(TaskProbes.class.getName());
+        Class<?> parts = loader.loadClass(Part.class.getName());
+        Object value = Arrays.stream(parts.getEnumConstants()).filter(p -> ((Enum<?>) p).name().equals(part)).findFirst().orElseThrow();
+        return probes.getMethod("probe", parts).invoke(null, value);
+    }
+}

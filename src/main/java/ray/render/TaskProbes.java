@@ -1,0 +1,406 @@
+package ray.render;
+
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.EnumSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.camera.Camera;
+import ray.camera.OrthographicCamera;
+import ray.camera.PerspectiveCamera;
+import ray.image.Image;
+import ray.math.Vec3;
+import ray.shading.ClampTexture;
+import ray.shading.RepeatTexture;
+import ray.shading.Texture;
+import ray.surface.Cylinder;
+import ray.surface.Group;
+import ray.surface.Sphere;
+import ray.surface.Surface;
+import ray.surface.Triangle;
+
+/**
+ * One probe per class of student code, each a tiny hand-made case run on that class alone (a ray
+ * straight at a unit sphere, a group of two surfaces that are both hit, a 2 × 2 texture, ...). A
+ * probe tells two things apart:
+ * <ul>
+ * <li>whether the class still behaves as the handout's stub: every case gets the stub's answer (a
+ * camera's rays that cannot reach anything, a surface or group that is never hit, a texture that is
+ * black everywhere), which {@code ray1 render} reports in one line ({@link #stubs}, {@link #stillStubsLine});
+ * <li>what the class gets wrong in the plain case, which any finished solution passes (the render
+ * tests' basic checks, which say whether another, unfinished task is to blame for a wrong image).
+ * </ul>
+ * Stubs are found by what the code does, not by reading sources: the student part is plain Java and
+ * ray1 may run from anywhere. Code that throws is written, only broken: never a stub.
+ */
+public final class TaskProbes {
+    /** The classes a student fills in: each one's task and file (docs/assignment.md's table). */
+    public enum Part {
+        PERSPECTIVE_CAMERA(1, "PerspectiveCamera", "src/main/java/ray/camera/PerspectiveCamera.java"),
+        ORTHOGRAPHIC_CAMERA(1, "OrthographicCamera", "src/main/java/ray/camera/OrthographicCamera.java"),
+        SPHERE(2, "Sphere", "src/main/java/ray/surface/Sphere.java"),
+        TRIANGLE(3, "Triangle", "src/main/java/ray/surface/Triangle.java"),
+        GROUP(4, "Group", "src/main/java/ray/surface/Group.java"),
+        REPEAT_TEXTURE(5, "RepeatTexture", "src/main/java/ray/shading/RepeatTexture.java"),
+        CLAMP_TEXTURE(5, "ClampTexture", "src/main/java/ray/shading/ClampTexture.java"),
+        /** Extra credit. */
+        CYLINDER(6, "Cylinder", "src/main/java/ray/surface/Cylinder.java");
+
+        public final int task;
+        public final String className;
+        /** The file to edit, relative to the project folder. */
+        public final String file;
+
+        Part(int task, String className, String file) {
+            this.task = task;
+            this.className = className;
+            this.file = file;
+        }
+    }
+
+    /** The extra-credit task: named as such, and never the one to start with while a required task is a stub. */
+    static final int EXTRA_CREDIT = 6;
+    /** The order docs/assignment.md suggests, which gives pictures earliest: the first stub in it is where to start. */
+    private static final int[] SUGGESTED_ORDER = {1, 4, 2, 3, 5, 6};
+    /** Each task's name when all of its parts are stubs. */
+    private static final Map<Integer, String> TASK_TITLES = Map.of(1, "cameras", 2, "Sphere", 3, "Triangle", 4, "Group",
+            5, "textures", 6, "Cylinder, extra credit");
+    /** How long {@link #stubs()} waits for the probes: code that has not answered by then is no stub (the stubs answer at once). */
+    public static final long DEFAULT_LIMIT_MILLIS = 3000;
+
+    /** What a probe found. */
+    public static final class Finding {
+        /** Whether every case got the handout stub's answer. */
+        public final boolean stub;
+        /** What the code gets wrong in the plain case, or null when it passes it. */
+        public final String problem;
+
+        Finding(boolean stub, String problem) {
+            this.stub = stub;
+            this.problem = problem;
+        }
+
+        @Override
+        public String toString() {
+            return stub ? "stub: " + problem : problem == null ? "passes" : problem;
+        }
+    }
+
+    private TaskProbes() {
+    }
+
+    /** Runs the probe of {@code part} in this thread. Whatever the student code throws becomes the problem "it throws …". */
+    public static Finding probe(Part part) {
+        try {
+            switch (part) {
+                case PERSPECTIVE_CAMERA:
+                    return camera(new PerspectiveCamera());
+                case ORTHOGRAPHIC_CAMERA:
+                    return camera(new OrthographicCamera());
+                case SPHERE:
+                    return sphere();
+                case TRIANGLE:
+                    return triangle();
+                case GROUP:
+                    return group();
+                case REPEAT_TEXTURE:
+                    return texture(RepeatTexture::new);
+                case CLAMP_TEXTURE:
+                    return texture(ClampTexture::new);
+                case CYLINDER:
+                    return cylinder();
+                default:
+                    throw new AssertionError(part);
+            }
+        } catch (Throwable e) { // student code: anything it throws (an Error too) means written, but broken
+            return new Finding(false, "it throws " + e);
+        }
+    }
+
+    /** The parts that still behave as the handout's stubs, within {@link #DEFAULT_LIMIT_MILLIS}. */
+    public static Set<Part> stubs() {
+        return stubs(DEFAULT_LIMIT_MILLIS);
+    }
+
+    /**
+     * The parts that still behave as the handout's stubs. Each probe runs in a daemon thread of its
+     * own, so that student code that never returns (a loop that does not end) costs at most
+     * {@code limitMillis} and stops nothing: a probe that has not answered by then counts as no stub.
+     */
+    public static Set<Part> stubs(long limitMillis) {
+        Map<Part, Finding> found = new ConcurrentHashMap<>();
+        Map<Part, Thread> threads = new EnumMap<>(Part.class);
+        for (Part part : Part.values()) {
+            Thread thread = new Thread(() -> found.put(part, probe(part)), "probe of " + part.className);
+            thread.setDaemon(true);
+            threads.put(part, thread);
+            thread.start();
+        }
+        long deadline = System.nanoTime() + limitMillis * 1_000_000;
+        try {
+            for (Thread thread : threads.values()) {
+                long left = deadline - System.nanoTime();
+                if (left > 0) {
+                    thread.join(Math.max(1, left / 1_000_000));
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        Set<Part> stubs = EnumSet.noneOf(Part.class);
+        for (Part part : Part.values()) {
+            Finding finding = found.get(part);
+            if (finding != null && finding.stub) {
+                stubs.add(part);
+            }
+        }
+        return stubs;
+    }
+
+    /**
+     * The line that says which tasks are still stubs and where to start, or null when none is:
+     * "Still stubs: Task 1 (cameras), Task 2 (Sphere), …. Start with Task 1: the TODO(Task 1)
+     * comments in src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java (see
+     * docs/assignment.md)." A task whose parts are only partly stubs is named by those parts
+     * ("Task 1 (OrthographicCamera)"). The task to start with is the first stub in the order
+     * docs/assignment.md suggests (1, 4, 2, 3, 5, then the extra credit). Plain ASCII, so that any
+     * console shows it.
+     */
+    public static String stillStubsLine(Set<Part> stubs) {
+        if (stubs.isEmpty()) {
+            return null;
+        }
+        Map<Integer, List<Part>> byTask = new LinkedHashMap<>();
+        for (Part part : Part.values()) {
+            if (stubs.contains(part)) {
+                byTask.computeIfAbsent(part.task, t -> new ArrayList<>()).add(part);
+            }
+        }
+        List<String> named = new ArrayList<>();
+        for (Map.Entry<Integer, List<Part>> entry : byTask.entrySet()) {
+            int task = entry.getKey();
+            List<Part> parts = entry.getValue();
+            String title = parts.size() == partsOf(task).size() ? TASK_TITLES.get(task)
+                    : String.join(" and ", parts.stream().map(p -> p.className).toArray(String[]::new));
+            named.add("Task " + task + " (" + title + ")");
+        }
+        int start = 0;
+        for (int task : SUGGESTED_ORDER) {
+            if (byTask.containsKey(task)) {
+                start = task;
+                break;
+            }
+        }
+        List<Part> files = byTask.get(start);
+        String where = "the TODO(Task " + start + ") " + (files.size() == 1 ? "comment" : "comments") + " in " + filesInWords(files)
+                + " (see docs/assignment.md).";
+        String next = start == EXTRA_CREDIT ? "For the extra credit: " + where : "Start with Task " + start + ": " + where;
+        return (stubs.size() == 1 ? "Still a stub: " : "Still stubs: ") + String.join(", ", named) + ". " + next;
+    }
+
+    private static List<Part> partsOf(int task) {
+        List<Part> parts = new ArrayList<>();
+        for (Part part : Part.values()) {
+            if (part.task == task) {
+                parts.add(part);
+            }
+        }
+        return parts;
+    }
+
+    /** "src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java": later files in the first one's folder by name alone. */
+    private static String filesInWords(List<Part> parts) {
+        String first = parts.get(0).file;
+        String folder = first.substring(0, first.lastIndexOf('/') + 1);
+        StringBuilder words = new StringBuilder(first);
+        for (Part part : parts.subList(1, parts.size())) {
+            words.append(" and ").append(part.file.startsWith(folder) ? part.file.substring(folder.length()) : part.file);
+        }
+        return words.toString();
+    }
+
+    // The probes. Each case is one the stub gets wrong and any finished solution gets right.
+
+    /**
+     * A camera at the origin looking along −z with a 2 × 2 image plane (1 unit away): the ray through
+     * the center must look along −z from the origin, and the one through the upper-right corner up and
+     * to the right. The stub's rays (start = end) cannot reach anything.
+     */
+    private static Finding camera(Camera camera) {
+        String name = camera.getClass().getSimpleName() + ".generateRay";
+        camera.setViewWidth(2);
+        camera.setViewHeight(2);
+        camera.complete();
+        Ray center = camera.generateRay(0.5, 0.5);
+        Ray corner = camera.generateRay(1, 1);
+        Ray lowerLeft = camera.generateRay(0.25, 0.25);
+        boolean stub = cannotReachAnything(center) && cannotReachAnything(corner) && cannotReachAnything(lowerLeft);
+        String problem = emptyRayProblem(name, center);
+        if (problem == null && (!close(center.origin, Vec3.ZERO) || !sameDirection(center.direction, new Vec3(0, 0, -1)))) {
+            problem = name + "(0.5, 0.5) of a camera at the origin looking along −z returned origin " + center.origin
+                    + ", direction " + center.direction + "; expected origin (0, 0, 0) and a direction along (0, 0, −1)";
+        }
+        if (problem == null) {
+            problem = emptyRayProblem(name, corner);
+        }
+        if (problem == null) {
+            boolean orthographic = camera instanceof OrthographicCamera;
+            Vec3 origin = orthographic ? new Vec3(1, 1, 0) : Vec3.ZERO;
+            Vec3 direction = orthographic ? new Vec3(0, 0, -1) : new Vec3(1, 1, -1);
+            if (!close(corner.origin, origin) || !sameDirection(corner.direction, direction)) {
+                problem = name + "(1, 1), the upper-right corner of a 2 × 2 image plane, returned origin " + corner.origin
+                        + ", direction " + corner.direction + "; expected origin " + origin + " and a direction along " + direction;
+            }
+        }
+        return new Finding(stub, problem);
+    }
+
+    /** The stub's ray: one made, but with an empty segment or no direction, so that nothing can be hit. */
+    private static boolean cannotReachAnything(Ray ray) {
+        return ray != null && ray.origin != null && ray.direction != null && (!(ray.start < ray.end) || ray.direction.lengthSquared() == 0);
+    }
+
+    private static String emptyRayProblem(String name, Ray ray) {
+        if (ray == null || ray.origin == null || ray.direction == null) {
+            return name + " returned " + (ray == null ? "null" : "a ray without an origin or a direction");
+        }
+        if (!(ray.start < ray.end) || ray.direction.lengthSquared() == 0) {
+            return name + " returned a ray that cannot reach anything (start " + ray.start + ", end " + ray.end
+                    + ", direction " + ray.direction + "): is it still the stub?";
+        }
+        return null;
+    }
+
+    /** A unit sphere at the origin: straight ahead (t = 4), from inside it, and along a long slanted direction. */
+    private static Finding sphere() {
+        Surface sphere = new Sphere(Vec3.ZERO, 1).complete();
+        return surface("Sphere.intersect", "a unit sphere 5 units ahead of the ray", sphere, 4, ahead(),
+                new Ray(Vec3.ZERO, new Vec3(1, 0, 0)), new Ray(new Vec3(3, 4, 5), new Vec3(-6, -8, -10)));
+    }
+
+    /** A triangle in the plane z = 0 around the origin: straight ahead (t = 5), from behind, and slanted. */
+    private static Finding triangle() {
+        Surface triangle = new Triangle(new Vec3(-1, -1, 0), new Vec3(1, -1, 0), new Vec3(0, 1, 0)).complete();
+        return surface("Triangle.intersect", "a triangle 5 units straight ahead of the ray", triangle, 5, ahead(),
+                new Ray(new Vec3(0, 0, -5), new Vec3(0, 0, 1)), new Ray(new Vec3(1, 1, 2), new Vec3(-1, -1.2, -2)));
+    }
+
+    /** The top cap straight below the ray (t = 2), the side from outside and from inside. */
+    private static Finding cylinder() {
+        Surface cylinder = new Cylinder(new Vec3(0, -3, 0), 1, 2).complete();
+        return surface("Cylinder.intersect", "the top cap of a cylinder straight below the ray (direction (0, −2, 0))", cylinder, 2,
+                new Ray(new Vec3(0, 3, 0), new Vec3(0, -2, 0)), new Ray(new Vec3(5, -2, 0), new Vec3(-1, 0, 0)),
+                new Ray(new Vec3(0, -2, 0), new Vec3(1, 0, 0)));
+    }
+
+    /** From (0, 0, 5) along −z. */
+    private static Ray ahead() {
+        return new Ray(new Vec3(0, 0, 5), new Vec3(0, 0, -1));
+    }
+
+    /**
+     * A surface that every ray hits: the stub's misses them all. The plain case is the first ray,
+     * which must hit at {@code expectedT}.
+     */
+    private static Finding surface(String method, String what, Surface surface, double expectedT, Ray plain, Ray... others) {
+        IntersectionRecord out = new IntersectionRecord();
+        boolean hit = surface.intersect(out, plain);
+        boolean stub = !hit;
+        for (Ray ray : others) {
+            stub &= !surface.intersect(new IntersectionRecord(), ray);
+        }
+        String problem = null;
+        if (!hit) {
+            problem = method + " misses " + what + " (expected a hit at t = " + expectedT + ")";
+        } else if (Math.abs(out.t - expectedT) > 1e-9 * expectedT) {
+            problem = method + " hits " + what + " at t = " + out.t + "; expected t = " + expectedT;
+        }
+        return new Finding(stub, problem);
+    }
+
+    /** Two stand-ins hit at t = 7 and t = 3: the group must report the closer; the stub reports none, nor in a group of one. */
+    private static Finding group() {
+        Group group = new Group();
+        group.addSurface(new HitAt(7));
+        group.addSurface(new HitAt(3));
+        IntersectionRecord out = new IntersectionRecord();
+        boolean hit = group.intersect(out, ahead());
+        Group one = new Group();
+        one.addSurface(new HitAt(2));
+        boolean stub = !hit && !one.intersect(new IntersectionRecord(), ahead());
+        String problem = !hit ? "Group.intersect finds no hit in a group of two surfaces that are both hit"
+                : out.t != 3 ? "Group.intersect reports t = " + out.t + " for two surfaces hit at t = 7 and t = 3; expected the closer, t = 3"
+                : null;
+        return new Finding(stub, problem);
+    }
+
+    /**
+     * A 2 × 2 texture of four colors, none black: the lookup at each texel's center (u = column / 2
+     * and v = 1 − row / 2, the row counted from the top) must give that texel. The stub gives black
+     * everywhere.
+     */
+    private static Finding texture(java.util.function.Function<Image, Texture> make) {
+        Image image = new Image(2, 2);
+        for (int i = 0; i < 2; i++) {
+            for (int j = 0; j < 2; j++) {
+                image.set(i, j, new Vec3(i, j, 0.5)); // j counts from the bottom
+            }
+        }
+        Texture texture = make.apply(image);
+        boolean stub = true;
+        String problem = null;
+        for (int column = 0; column < 2; column++) {
+            for (int row = 0; row < 2; row++) {
+                double u = 0.5 * column;
+                double v = 1 - 0.5 * row;
+                Vec3 expected = image.get(column, 1 - row);
+                Vec3 color = texture.getTexColor(u, v);
+                stub &= color != null && color.x == 0 && color.y == 0 && color.z == 0;
+                if (problem == null && (color == null || !close(color, expected))) {
+                    problem = texture.getClass().getSimpleName() + ".getTexColor(" + u + ", " + v + ") on a 2 × 2 image returned "
+                            + color + "; expected texel (" + column + ", " + row + ") counted from the top-left, " + expected;
+                }
+            }
+        }
+        return new Finding(stub, problem);
+    }
+
+    private static boolean close(Vec3 a, Vec3 b) {
+        return a.minus(b).length() <= 1e-9;
+    }
+
+    private static boolean sameDirection(Vec3 d, Vec3 expected) {
+        return d.isFinite() && d.lengthSquared() > 0 && d.normalized().minus(expected.normalized()).length() <= 1e-9;
+    }
+
+    /** A stand-in for the group's probe: every ray whose open segment holds {@code t} hits it there. */
+    private static final class HitAt extends Surface {
+        private final double t;
+
+        HitAt(double t) {
+            this.t = t;
+        }
+
+        @Override
+        public boolean intersect(IntersectionRecord out, Ray ray) {
+            if (!(ray.start < t && t < ray.end)) {
+                return false;
+            }
+            out.t = t;
+            out.location = ray.pointAt(t);
+            out.normal = new Vec3(0, 0, 1);
+            out.surface = this;
+            return true;
+        }
+
+        @Override
+        public String toString() {
+            return "a surface hit at t = " + t;
+        }
+    }
+}
