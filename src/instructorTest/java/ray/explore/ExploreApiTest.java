@@ -100,7 +100,7 @@ public class ExploreApiTest {
             JsonObject story = json(explorer, "api/trace?x=150&y=149", 200);
             assertEquals(150, story.get("i").getAsInt());
             assertEquals(150, story.get("j").getAsInt());
-            // u = v = 150.5/300; s = t = (u − ½)·1 = 1/600; direction s·u + t·v − 2·w with the default basis.
+            // imageU = imageV = 150.5/300; planeU = planeV = (imageU − ½)·1 = 1/600; direction planeU·u + planeV·v − 2·w with the default basis.
             double a = 1.0 / 600;
             JsonObject ray = story.getAsJsonObject("cameraRay");
             assertVec(new double[] {0, 0, 5}, ray.getAsJsonArray("origin"), 0);

@@ -48,7 +48,7 @@ public class Task1HiddenTest {
         PerspectiveCamera camera = slanted(new PerspectiveCamera());
         camera.setProjDistance(2.5);
         camera.complete();
-        // (0.75, 0.2): s = 0.25·2 = 0.5, t = −0.3·1.5 = −0.45.
+        // (0.75, 0.2): planeU = 0.25·2 = 0.5, planeV = −0.3·1.5 = −0.45.
         // direction = 0.5·(0.8,0,0.6) − 0.45·(0,1,0) − 2.5·(−0.6,0,0.8) = (0.4 + 1.5, −0.45, 0.3 − 2) = (1.9, −0.45, −1.7).
         assertRay("the perspective " + SLANTED + " at distance 2.5", camera, 0.75, 0.2, v(1, 2, 3), v(1.9, -0.45, -1.7), 1e-13);
     }
@@ -57,7 +57,7 @@ public class Task1HiddenTest {
     public void orthographicWithLongViewDirAndSlantedViewUpAtAnOffCenterPoint() {
         OrthographicCamera camera = slanted(new OrthographicCamera());
         camera.complete();
-        // (0.1, 0.9): s = −0.4·2 = −0.8, t = 0.4·1.5 = 0.6.
+        // (0.1, 0.9): planeU = −0.4·2 = −0.8, planeV = 0.4·1.5 = 0.6.
         // origin = (1,2,3) − 0.8·(0.8,0,0.6) + 0.6·(0,1,0) = (0.36, 2.6, 2.52); direction −w = (0.6, 0, −0.8).
         assertRay("the orthographic " + SLANTED, camera, 0.1, 0.9, v(0.36, 2.6, 2.52), v(0.6, 0, -0.8), 1e-13);
     }
@@ -65,8 +65,8 @@ public class Task1HiddenTest {
     /**
      * Random views against the conventions written another way: with g = normalize(viewDir),
      * u = normalize(viewDir × viewUp) (= normalize(viewUp × w), as w = −g) and v = u × g (= w × u),
-     * a perspective ray goes along s·u + t·v + projDistance·g and an orthographic one starts at
-     * viewPoint + s·u + t·v and goes along g.
+     * a perspective ray goes along planeU·u + planeV·v + projDistance·g and an orthographic one
+     * starts at viewPoint + planeU·u + planeV·v and goes along g.
      */
     @Test
     public void randomViewsFollowTheConventions() {
@@ -86,8 +86,8 @@ public class Task1HiddenTest {
             Vec3 vAxis = u.cross(g);
             double imageU = random.nextDouble();
             double imageV = random.nextDouble();
-            double s = (imageU - 0.5) * width;
-            double t = (imageV - 0.5) * height;
+            double planeU = (imageU - 0.5) * width;
+            double planeV = (imageV - 0.5) * height;
             String view = "random view " + i + " (viewPoint " + eye + ", viewDir " + viewDir + ", viewUp " + viewUp
                     + ", " + width + "×" + height + " plane";
 
@@ -95,13 +95,13 @@ public class Task1HiddenTest {
             setUp(perspective, eye, viewDir, viewUp, width, height);
             perspective.setProjDistance(distance);
             perspective.complete();
-            Vec3 direction = u.times(s).plus(vAxis.times(t)).plus(g.times(distance));
+            Vec3 direction = u.times(planeU).plus(vAxis.times(planeV)).plus(g.times(distance));
             assertRay("perspective " + view + " at distance " + distance + ")", perspective, imageU, imageV, eye, direction, 1e-12);
 
             OrthographicCamera orthographic = new OrthographicCamera();
             setUp(orthographic, eye, viewDir, viewUp, width, height);
             orthographic.complete();
-            assertRay("orthographic " + view + ")", orthographic, imageU, imageV, eye.plus(u.times(s)).plus(vAxis.times(t)), g, 1e-12);
+            assertRay("orthographic " + view + ")", orthographic, imageU, imageV, eye.plus(u.times(planeU)).plus(vAxis.times(planeV)), g, 1e-12);
         }
     }
 

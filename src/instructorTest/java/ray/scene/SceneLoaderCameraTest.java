@@ -27,7 +27,7 @@ public class SceneLoaderCameraTest {
     // Both cameras below look along +x with +z up, a basis unlike the default one:
     // w = −normalize(viewDir) = (−1, 0, 0); u = normalize(viewUp × w) = normalize((0, 0, 3) × (−1, 0, 0))
     // = normalize((0, −3, 0)) = (0, −1, 0); v = w × u = (0, 0, 1).
-    // With viewWidth 4 and viewHeight 3: s = (imageU − ½)·4 ∈ [−2, 2] and t = (imageV − ½)·3 ∈ [−1.5, 1.5].
+    // With viewWidth 4 and viewHeight 3: planeU = (imageU − ½)·4 ∈ [−2, 2] and planeV = (imageV − ½)·3 ∈ [−1.5, 1.5].
 
     @Test
     public void perspectiveCameraReadsEveryProperty() {
@@ -46,7 +46,7 @@ public class SceneLoaderCameraTest {
                 """);
         Camera camera = scene.getCamera();
         assertTrue("a " + camera, camera instanceof PerspectiveCamera);
-        // Every ray starts at viewPoint; direction = s·u + t·v − projDistance·w = (2, −s, t).
+        // Every ray starts at viewPoint; direction = planeU·u + planeV·v − projDistance·w = (2, −planeU, planeV).
         assertPerspectiveRay(camera, 0.5, 0.5, v(1, 2, 3), v(2, 0, 0));
         assertPerspectiveRay(camera, 0, 0, v(1, 2, 3), v(2, 2, -1.5));
         assertPerspectiveRay(camera, 1, 0, v(1, 2, 3), v(2, -2, -1.5));
@@ -99,7 +99,7 @@ public class SceneLoaderCameraTest {
                 """);
         Camera camera = scene.getCamera();
         assertTrue("a " + camera, camera instanceof OrthographicCamera);
-        // origin = viewPoint + s·u + t·v = (1, 2 − s, 3 + t); every direction is −w = (1, 0, 0).
+        // origin = viewPoint + planeU·u + planeV·v = (1, 2 − planeU, 3 + planeV); every direction is −w = (1, 0, 0).
         assertOrthographicRay(camera, 0.5, 0.5, v(1, 2, 3), v(1, 0, 0));
         assertOrthographicRay(camera, 0, 0, v(1, 4, 1.5), v(1, 0, 0));
         assertOrthographicRay(camera, 1, 0, v(1, 0, 1.5), v(1, 0, 0));

@@ -6,9 +6,9 @@ import ray.math.Vec3;
 /** {@link TextureLookups} for graded tests in other packages (the hidden tests). */
 public final class TextureLookupsAccess {
     private static final String REPEAT = "a RepeatTexture wraps column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5),"
-            + " counted from the top, into the image";
+            + " counted from the top (Math.floor instead of (int) is accepted too), into the image";
     private static final String CLAMP = "a ClampTexture clamps column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5),"
-            + " counted from the top, to the image";
+            + " counted from the top (Math.floor instead of (int) is accepted too), to the image";
 
     private TextureLookupsAccess() {
     }

@@ -10,10 +10,10 @@ import ray.math.Vec3;
  *
  * <p>For the ray (o, d) of a pixel, the point p where the line o + t·d crosses the image plane
  * (projDistance in front of viewPoint for a perspective camera, through viewPoint for an
- * orthographic one) gives the image-plane coordinates s = (p − e)·u and t = (p − e)·v, e being
- * viewPoint. The pixel's red is s / viewWidth + ½ and its green t / viewHeight + ½, so correct
- * rays paint the same picture for every camera: black at the lower left, red at the lower right,
- * green at the upper left, yellow at the upper right. Blue shows how far a ray is from its kind's
+ * orthographic one) gives the image-plane coordinates planeU = (p − e)·u and planeV = (p − e)·v,
+ * e being viewPoint. The pixel's red is planeU / viewWidth + ½ and its green planeV / viewHeight + ½,
+ * so correct rays paint the same picture for every camera: black at the lower left, red at the lower
+ * right, green at the upper left, yellow at the upper right. Blue shows how far a ray is from its kind's
  * rule: a perspective ray that does not start at viewPoint (|o − e| in units of the larger view
  * side), an orthographic ray not parallel to viewDir (|d/|d| + w|); correct rays have none.
  * Magenta marks a ray that cannot see anything: none, an empty segment (the stubs' rays), a

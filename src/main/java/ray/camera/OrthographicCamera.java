@@ -8,8 +8,9 @@ public class OrthographicCamera extends Camera {
     @Override
     public Ray generateRay(double imageU, double imageV) {
         // TODO(Task 1): make the ray through image point (imageU, imageV) of an orthographic view.
-        //   1) The image-plane coordinates: s = (imageU − ½)·viewWidth, t = (imageV − ½)·viewHeight.
-        //   2) The ray starts on the image plane, at viewPoint + s·u + t·v, and points along −w.
+        //   1) The image-plane coordinates: planeU = (imageU − ½)·viewWidth and
+        //      planeV = (imageV − ½)·viewHeight (t is kept for the ray's parameter).
+        //   2) The ray starts on the image plane, at viewPoint + planeU·u + planeV·v, and points along −w.
         //   3) Return new Ray(origin, direction).
         // BEGIN SOLUTION
         double s = (imageU - 0.5) * viewWidth;

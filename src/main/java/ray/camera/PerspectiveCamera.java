@@ -14,9 +14,11 @@ public class PerspectiveCamera extends Camera {
     @Override
     public Ray generateRay(double imageU, double imageV) {
         // TODO(Task 1): make the ray from the eye through image point (imageU, imageV).
-        //   1) The image-plane coordinates: s = (imageU − ½)·viewWidth, t = (imageV − ½)·viewHeight.
+        //   1) The image-plane coordinates: planeU = (imageU − ½)·viewWidth and
+        //      planeV = (imageV − ½)·viewHeight (t is kept for the ray's parameter).
         //   2) The ray starts at viewPoint and goes toward that point of the image plane, which lies
-        //      projDistance along −w: direction = s·u + t·v − projDistance·w (no need to normalize).
+        //      projDistance along −w: direction = planeU·u + planeV·v − projDistance·w (no need to
+        //      normalize).
         //   3) Return new Ray(origin, direction).
         // BEGIN SOLUTION
         double s = (imageU - 0.5) * viewWidth;

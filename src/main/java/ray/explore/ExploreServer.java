@@ -20,7 +20,7 @@ import ray.trace.Failure;
 /**
  * The explore page's web server, on the loopback address only (the JDK's
  * {@code com.sun.net.httpserver}). It serves a fixed set of paths: the page's three files from the
- * class path, and the API (docs in the README): {@code GET /api/scene}, {@code /api/trace?x=&y=},
+ * class path, and the API (documented in docs/cli.md): {@code GET /api/scene}, {@code /api/trace?x=&y=},
  * {@code /api/image.png}, {@code /api/reference.png}, {@code /api/diff.png} and
  * {@code POST /api/rerender}. No part of a request names a file, so it can serve nothing else.
  * Requests whose Host is not this machine's loopback name are refused, so a web page elsewhere

@@ -18,6 +18,7 @@ public class ClampTexture extends Texture {
         // TODO(Task 5): return the color of the texel that (u, v) picks, clamped to the image.
         //   1) With W = image.width() and H = image.height(), the column is i = (int) (u·W + 0.5) and
         //      the row, counted from the image's top, is (int) ((1 − v)·H + 0.5), as in RepeatTexture.
+        //      (int) Math.floor(…) is just as right: after the clamping it picks the same texel everywhere.
         //   2) Clamp the column to 0 … W − 1 and the row to 0 … H − 1, so that u = 1.25 reads the
         //      right-hand column and v = 1.25 the top row.
         //   3) Return texel(column, row).

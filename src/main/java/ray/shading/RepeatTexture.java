@@ -19,8 +19,10 @@ public class RepeatTexture extends Texture {
         //   1) With W = image.width() and H = image.height(), the column is i = (int) (u·W + 0.5) and
         //      the row, counted from the image's top, is (int) ((1 − v)·H + 0.5). v counts up from the
         //      bottom but rows count down from the top, so turn v into 1 − v first, then scale and round
-        //      (flipping after the rounding, H − 1 − (int) (v·H + 0.5), is one row off everywhere). Use
-        //      the casts as written: the reference images round this way ((int) drops the fraction).
+        //      (flipping after the rounding, H − 1 − (int) (v·H + 0.5), is one row off everywhere). The
+        //      cast (int) drops the fraction, as the reference renderer does; (int) Math.floor(…) is just
+        //      as right: the same texel wherever the value is ≥ 0, one texel over where it is negative
+        //      (u below −½ texel, v above 1 + ½ texel), and the tests accept either texel there.
         //   2) Wrap the column into 0 … W − 1 and the row into 0 … H − 1, so that u = 1.25 reads like
         //      u = 0.25. Careful: Java's % keeps the sign of a negative number (−1 % W is −1);
         //      Math.floorMod(i, W) does not.

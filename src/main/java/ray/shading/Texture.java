@@ -18,6 +18,8 @@ import ray.math.Vec3;
  * scaled and rounded. Texel (i, row) then covers the coordinates within half a texel of
  * (u, 1 − v) = (i/W, row/H). Flipping after the rounding instead, row H − 1 − (int) (v·H + 0.5),
  * lands one row higher everywhere: the two differ by one row at every v, not only at the edges.
+ * Rounding down with Math.floor instead of the cast is as right: it differs only where the value
+ * rounded is negative, by one texel, which a clamp removes and the tests accept.
  * {@link #texel(int, int)} reads a texel by that column and row.
  */
 public abstract class Texture {

@@ -11,8 +11,8 @@ import ray.testing.StudentTaskRule;
 
 /**
  * Checks OrthographicCamera.generateRay against rays computed by hand from the conventions:
- * origin = viewPoint + s·u + t·v, direction = −w, with s = (u − ½)·viewWidth and
- * t = (v − ½)·viewHeight, and a segment from 0 to +∞.
+ * origin = viewPoint + planeU·u + planeV·v, direction = −w, with the image-plane coordinates
+ * planeU = (imageU − ½)·viewWidth and planeV = (imageV − ½)·viewHeight, and a segment from 0 to +∞.
  */
 @Points(value = 1, task = StudentTask.CAMERA)
 public class OrthographicCameraTest {
@@ -30,7 +30,8 @@ public class OrthographicCameraTest {
 
     /**
      * Looking along +x with +z up from (1,2,3): u = (0,−1,0), v = (0,0,1), −w = (1,0,0).
-     * With viewWidth 4 and viewHeight 2 the origin is (1, 2 − s, 3 + t), s = 4(u − ½), t = 2(v − ½).
+     * With viewWidth 4 and viewHeight 2 the origin is (1, 2 − planeU, 3 + planeV), planeU = 4(imageU − ½),
+     * planeV = 2(imageV − ½).
      */
     private static OrthographicCamera rotatedCamera() {
         OrthographicCamera camera = new OrthographicCamera();
@@ -67,7 +68,7 @@ public class OrthographicCameraTest {
     @Points(value = 2, task = StudentTask.CAMERA)
     public void rotatedCameraCornerRaysUseItsBasisAndNonSquarePlane() {
         OrthographicCamera camera = rotatedCamera();
-        // (0,0): s = −2, t = −1 → (1, 4, 2); the other corners flip the signs of s and t.
+        // (0,0): planeU = −2, planeV = −1 → (1, 4, 2); the other corners flip their signs.
         assertRay(ROTATED, camera, 0, 0, v(1, 4, 2), v(1, 0, 0));
         assertRay(ROTATED, camera, 1, 0, v(1, 0, 2), v(1, 0, 0));
         assertRay(ROTATED, camera, 0, 1, v(1, 4, 4), v(1, 0, 0));
@@ -76,7 +77,7 @@ public class OrthographicCameraTest {
 
     @Test
     public void rotatedCameraOffCenterPointDistinguishesUFromV() {
-        // (0.25, 0.75): s = −1, t = 0.5 → origin (1, 3, 3.5).
+        // (0.25, 0.75): planeU = −1, planeV = 0.5 → origin (1, 3, 3.5).
         assertRay(ROTATED, rotatedCamera(), 0.25, 0.75, v(1, 3, 3.5), v(1, 0, 0));
     }
 

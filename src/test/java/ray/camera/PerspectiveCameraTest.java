@@ -12,8 +12,9 @@ import ray.testing.StudentTaskRule;
 
 /**
  * Checks PerspectiveCamera.generateRay against rays computed by hand from the conventions:
- * origin = viewPoint, direction = s·u + t·v − projDistance·w with s = (u − ½)·viewWidth and
- * t = (v − ½)·viewHeight, and a segment from 0 to +∞.
+ * origin = viewPoint, direction = planeU·u + planeV·v − projDistance·w with the image-plane
+ * coordinates planeU = (imageU − ½)·viewWidth and planeV = (imageV − ½)·viewHeight, and a segment
+ * from 0 to +∞.
  */
 @Points(value = 1, task = StudentTask.CAMERA)
 public class PerspectiveCameraTest {
@@ -33,7 +34,8 @@ public class PerspectiveCameraTest {
     /**
      * Looking along +x with +z up: w = (−1,0,0), u = normalize((0,0,1) × w) = (0,−1,0),
      * v = w × u = (0,0,1). With viewWidth 4, viewHeight 2 and projDistance 2 the direction is
-     * s·(0,−1,0) + t·(0,0,1) + 2·(1,0,0) = (2, −s, t), s = 4(u − ½), t = 2(v − ½).
+     * planeU·(0,−1,0) + planeV·(0,0,1) + 2·(1,0,0) = (2, −planeU, planeV), planeU = 4(imageU − ½),
+     * planeV = 2(imageV − ½).
      */
     private static PerspectiveCamera rotatedCamera() {
         PerspectiveCamera camera = new PerspectiveCamera();
@@ -71,7 +73,7 @@ public class PerspectiveCameraTest {
     @Points(value = 2, task = StudentTask.CAMERA)
     public void rotatedCameraCornerRaysUseItsBasisAndNonSquarePlane() {
         PerspectiveCamera camera = rotatedCamera();
-        // (u,v) = (0,0): s = −2, t = −1 → (2, 2, −1); the other corners flip the signs of s and t.
+        // (imageU, imageV) = (0,0): planeU = −2, planeV = −1 → (2, 2, −1); the other corners flip their signs.
         assertRay(ROTATED, camera, 0, 0, v(1, 2, 3), v(2, 2, -1));
         assertRay(ROTATED, camera, 1, 0, v(1, 2, 3), v(2, -2, -1));
         assertRay(ROTATED, camera, 0, 1, v(1, 2, 3), v(2, 2, 1));
@@ -80,7 +82,7 @@ public class PerspectiveCameraTest {
 
     @Test
     public void rotatedCameraOffCenterPointDistinguishesUFromV() {
-        // (u,v) = (0.25, 0.75): s = 4·(−0.25) = −1, t = 2·0.25 = 0.5 → (2, 1, 0.5).
+        // (imageU, imageV) = (0.25, 0.75): planeU = 4·(−0.25) = −1, planeV = 2·0.25 = 0.5 → (2, 1, 0.5).
         assertRay(ROTATED, rotatedCamera(), 0.25, 0.75, v(1, 2, 3), v(2, 1, 0.5));
     }
 
@@ -96,7 +98,7 @@ public class PerspectiveCameraTest {
         double a = Math.sqrt(0.5);
         // Center: −2·w = (2a, 2a, 0), of length 2 whatever the length of viewDir.
         assertRay(which, camera, 0.5, 0.5, Vec3.ZERO, v(2 * a, 2 * a, 0));
-        // (1,1): s = t = ½ → ½(a,−a,0) + ½(0,0,1) + (2a,2a,0) = (2.5a, 1.5a, 0.5).
+        // (1,1): planeU = planeV = ½ → ½(a,−a,0) + ½(0,0,1) + (2a,2a,0) = (2.5a, 1.5a, 0.5).
         assertRay(which, camera, 1, 1, Vec3.ZERO, v(2.5 * a, 1.5 * a, 0.5));
     }
 

@@ -24,7 +24,8 @@ public class RepeatTextureTest {
     private static final int W = 4;
     private static final int H = 3;
     private static final String RULE = "the texel is column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5) counted from the"
-            + " top, each wrapped into 0…W−1 and 0…H−1 (Math.floorMod), read with texel(column, row)";
+            + " top (Math.floor instead of (int) is accepted too), each wrapped into 0…W−1 and 0…H−1 (Math.floorMod), read with"
+            + " texel(column, row)";
     private final Image image = TextureLookups.distinctTexels(W, H);
     private final RepeatTexture texture = new RepeatTexture(image);
 
