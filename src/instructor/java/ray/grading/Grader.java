@@ -325,6 +325,9 @@ public final class Grader implements Callable<Integer> {
 
     private static void describe(Submission s, StringBuilder output) {
         output.append("Graded files: ").append(s.files.isEmpty() ? "none" : String.join(", ", s.files.keySet())).append('\n');
+        if (s.manifest != null) {
+            output.append(SubmissionManifest.check(s.manifest, s.files));
+        }
         if (!s.missing.isEmpty()) {
             output.append("Not found in the submission (graded as the untouched handout): ")
                     .append(String.join(", ", s.missing)).append('\n');

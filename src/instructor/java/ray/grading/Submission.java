@@ -20,7 +20,8 @@ import java.util.zip.ZipInputStream;
 /**
  * What a student handed in: a folder or a zip, laid out like the handout (possibly inside one
  * top folder), or just the edited files side by side (as Gradescope uploads often are). Only the
- * student-fillable files are taken; everything else is listed as ignored.
+ * student-fillable files are taken; everything else is listed as ignored, except the
+ * {@link SubmissionManifest} that the students' {@code gradle submission} packs with them.
  */
 public final class Submission {
     /** Relative path in the project → the submitted file. */
@@ -29,11 +30,14 @@ public final class Submission {
     public final List<String> missing;
     /** Submitted files that are not student files (tests, framework, build files, ...), never used. */
     public final List<String> ignored;
+    /** The checksums {@code gradle submission} recorded ({@link SubmissionManifest}), or null when there are none. */
+    public final Path manifest;
 
-    private Submission(Map<String, Path> files, List<String> missing, List<String> ignored) {
+    private Submission(Map<String, Path> files, List<String> missing, List<String> ignored, Path manifest) {
         this.files = files;
         this.missing = missing;
         this.ignored = ignored;
+        this.manifest = manifest;
     }
 
     /**
@@ -67,8 +71,14 @@ public final class Submission {
                 used.add(match);
             }
         }
+        // The manifest beside the files (at the top, or in the top folder): the shortest path wins, as for a student file.
+        String manifest = all.stream().filter(p -> p.equals(SubmissionManifest.NAME) || p.endsWith("/" + SubmissionManifest.NAME))
+                .min(Comparator.comparingInt(String::length)).orElse(null);
+        if (manifest != null) {
+            used.add(manifest);
+        }
         List<String> ignored = all.stream().filter(p -> !used.contains(p)).collect(Collectors.toList());
-        return new Submission(found, missing, ignored);
+        return new Submission(found, missing, ignored, manifest == null ? null : root.resolve(manifest));
     }
 
     /**

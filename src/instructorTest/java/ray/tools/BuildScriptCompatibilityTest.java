@@ -54,7 +54,7 @@ public class BuildScriptCompatibilityTest {
         Scripts scripts = Scripts.of(PROJECT);
         Set<String> read = scripts.names;
         assertTrue(read.toString(), read.containsAll(List.of("build.gradle", "settings.gradle", "gradle/test-report.gradle",
-                "gradle/instructor.gradle")));
+                "gradle/submission.gradle", "gradle/instructor.gradle")));
         assertEquals(Set.of("gradle/legacy-run.gradle", "gradle/legacy-test-worker.gradle"), scripts.oldGradleOnly);
         try (Stream<Path> files = Files.list(PROJECT.resolve("gradle"))) {
             for (Path file : (Iterable<Path>) files.filter(f -> f.toString().endsWith(".gradle"))::iterator) {
