@@ -66,8 +66,10 @@ public abstract class RenderTestBase {
         }
         BufferedImage reference = PngReader.read(referenceFile);
         BufferedImage yours;
+        RenderScenes.Rendered rendered;
         try {
-            yours = RenderScenes.render(loaded);
+            rendered = RenderScenes.renderWithKinds(loaded);
+            yours = rendered.image();
         } catch (RuntimeException | StackOverflowError e) {
             StudentTask thrower = StudentFrames.taskThatThrew(e);
             if (thrower != null && thrower != task()) {
@@ -85,6 +87,7 @@ public abstract class RenderTestBase {
         }
         String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference);
         String differs = shown + " does not look like " + referenceShown + ": " + result.summary();
+        differs += DifferingPixels.sentences(result, rendered.kinds(), shown);
         String see = "\n    See your image, the reference and where they differ in " + report;
         List<String> unfinished = new ArrayList<>();
         List<String> unfinishedTasks = new ArrayList<>();
