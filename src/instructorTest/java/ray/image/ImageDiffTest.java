@@ -158,6 +158,7 @@ public class ImageDiffTest {
         assertEquals("the images differ in size: expected 4x4, actual 5x4", r.summary());
         assertTrue(r.toString().startsWith("FAIL"));
         assertThrows(IllegalStateException.class, r::heatMap);
+        assertThrows(IllegalStateException.class, r::worstPixel);
     }
 
     @Test
@@ -207,5 +208,38 @@ public class ImageDiffTest {
         assertEquals(ImageDiff.heatColor(9, ImageDiff.TOLERANCE_LEVELS), map.getRGB(2, 8) & 0xffffff);
         assertEquals(ImageDiff.heatColor(1, ImageDiff.TOLERANCE_LEVELS), map.getRGB(11, 0) & 0xffffff);
         assertEquals(0, map.getRGB(0, 0) & 0xffffff);
+    }
+
+    /**
+     * The mask of the pixels that count (beyond the tolerance, not at it), and the worst pixel: the
+     * largest difference, the first in reading order from the top-left on a tie, as ray1 trace counts.
+     */
+    @Test
+    public void differingPixelsAndTheWorstAreFoundWhereTheyAreCountedFromTheTop() {
+        BufferedImage a = randomImage(12, 9, 10);
+        BufferedImage b = copy(a);
+        shift(b, 3, 7, 0, ImageDiff.TOLERANCE_LEVELS, 0);
+        shift(b, 5, 1, 0, 0, ImageDiff.TOLERANCE_LEVELS + 1);
+        shift(b, 10, 6, 9, 0, 0);
+        shift(b, 2, 6, -9, 0, 0);
+        shift(b, 7, 2, 0, 4, 0);
+        ImageDiff.Result r = ImageDiff.compare(a, b);
+        assertEquals(4, r.differingPixels());
+        int counted = 0;
+        for (int y = 0; y < 9; y++) {
+            for (int x = 0; x < 12; x++) {
+                assertEquals("(" + x + ", " + y + ")", r.differenceAt(x, y) > ImageDiff.TOLERANCE_LEVELS, r.differsAt(x, y));
+                counted += r.differsAt(x, y) ? 1 : 0;
+            }
+        }
+        assertEquals(4, counted);
+        assertFalse("at the tolerance, not beyond it", r.differsAt(3, 7));
+        assertTrue(r.differsAt(5, 1));
+        assertEquals("9 levels at (2, 6) and (10, 6): the left one, read first", new ImageDiff.Pixel(2, 6), r.worstPixel());
+        assertEquals("(2, 6)", r.worstPixel().toString());
+        assertEquals(9, r.differenceAt(r.worstPixel().x(), r.worstPixel().y()));
+        shift(b, 11, 0, 0, 0, 9);
+        assertEquals("a tie in an earlier row wins", new ImageDiff.Pixel(11, 0), ImageDiff.compare(a, b).worstPixel());
+        assertEquals("equal images: the first pixel", new ImageDiff.Pixel(0, 0), ImageDiff.compare(a, copy(a)).worstPixel());
     }
 }

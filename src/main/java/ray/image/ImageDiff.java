@@ -61,10 +61,12 @@ public final class ImageDiff {
         int width = expected.getWidth();
         int height = expected.getHeight();
         if (actual.getWidth() != width || actual.getHeight() != height) {
-            return new Result(expected, actual, toleranceLevels, maxShare, null, -1, Double.NaN, -1);
+            return new Result(expected, actual, toleranceLevels, maxShare, null, -1, -1, Double.NaN, -1);
         }
         int[] differences = new int[width * height];
         int maxDifference = 0;
+        // The first pixel, in reading order, whose difference is the largest.
+        int worst = 0;
         long channelSum = 0;
         int differing = 0;
         for (int y = 0; y < height; y++) {
@@ -77,14 +79,17 @@ public final class ImageDiff {
                 int d = Math.max(dr, Math.max(dg, db));
                 differences[y * width + x] = d;
                 channelSum += dr + dg + db;
-                maxDifference = Math.max(maxDifference, d);
+                if (d > maxDifference) {
+                    maxDifference = d;
+                    worst = y * width + x;
+                }
                 if (d > toleranceLevels) {
                     differing++;
                 }
             }
         }
         double mean = (double) channelSum / (3.0 * width * height);
-        return new Result(expected, actual, toleranceLevels, maxShare, differences, maxDifference, mean, differing);
+        return new Result(expected, actual, toleranceLevels, maxShare, differences, maxDifference, worst, mean, differing);
     }
 
     /** The outcome of one comparison. The figures other than the sizes are meaningful only when {@link #sameSize()}. */
@@ -98,11 +103,13 @@ public final class ImageDiff {
         /** Per pixel, row-major from the top, the largest channel difference; null when the sizes differ. */
         private final int[] differences;
         private final int maxDifference;
+        /** Index into {@link #differences} of the first pixel whose difference is {@link #maxDifference}; −1 when the sizes differ. */
+        private final int worst;
         private final double meanDifference;
         private final int differingPixels;
 
         private Result(BufferedImage expected, BufferedImage actual, int toleranceLevels, double maxShare, int[] differences,
-                int maxDifference, double meanDifference, int differingPixels) {
+                int maxDifference, int worst, double meanDifference, int differingPixels) {
             this.expectedWidth = expected.getWidth();
             this.expectedHeight = expected.getHeight();
             this.actualWidth = actual.getWidth();
@@ -111,6 +118,7 @@ public final class ImageDiff {
             this.maxShare = maxShare;
             this.differences = differences;
             this.maxDifference = maxDifference;
+            this.worst = worst;
             this.meanDifference = meanDifference;
             this.differingPixels = differingPixels;
         }
@@ -156,6 +164,26 @@ public final class ImageDiff {
         public int differenceAt(int x, int y) {
             requireSameSize();
             return differences[y * expectedWidth + x];
+        }
+
+        /**
+         * Whether pixel (x, y), y from the top, differs by more than the tolerance: one of the
+         * {@link #differingPixels()}.
+         */
+        public boolean differsAt(int x, int y) {
+            return differenceAt(x, y) > toleranceLevels;
+        }
+
+        /**
+         * The pixel whose difference is {@link #maxDifference()}, the first in reading order (rows
+         * from the top, each from the left) where several are: x from the left and y from the top,
+         * as {@code ray1 trace} takes a pixel. (0, 0) when the images are equal.
+         *
+         * @throws IllegalStateException when the sizes differ
+         */
+        public Pixel worstPixel() {
+            requireSameSize();
+            return new Pixel(worst % expectedWidth, worst / expectedWidth);
         }
 
         private int pixelCount() {
@@ -207,6 +235,14 @@ public final class ImageDiff {
         @Override
         public String toString() {
             return (passed() ? "PASS: " : "FAIL: ") + summary();
+        }
+    }
+
+    /** A pixel of an image: x from the left, y from the top (as in the PNG file and {@code ray1 trace}). */
+    public record Pixel(int x, int y) {
+        @Override
+        public String toString() {
+            return "(" + x + ", " + y + ")";
         }
     }
 

@@ -16,22 +16,35 @@ import ray.shading.Shader;
  * (camera, shadow and reflection rays, the specular terms and texture lookups of the shaders that
  * have them), so
  * that {@code --stats} shows what a scene costs and tests can prove that a scene without an effect
- * does none of its work. Not shared between threads.
+ * does none of its work; and, when asked, what each camera ray hit first ({@link #cameraKind()},
+ * for {@link PixelKinds}). Not shared between threads.
  */
 final class CountingTracer extends SceneTracer {
     private final SearchCounter counter;
     private final RayStats stats = new RayStats();
     /** The effects of each shader met so far, its parts' included. */
     private final Map<Shader, Set<Effect>> effects = new IdentityHashMap<>();
+    /** Whether camera rays' closest hits are noted; when false nothing below is touched. */
+    private final boolean recordKinds;
+    /** The kind the last camera ray hit first, when recording. */
+    private SurfaceKind cameraKind = SurfaceKind.BACKGROUND;
+    /** Whether the last camera ray's closest hit is yet to be shaded: the next {@link #shade} is its. */
+    private boolean cameraHitPending;
 
     CountingTracer(RenderPlan plan) {
-        this(plan, new SearchCounter());
+        this(plan, false);
     }
 
-    private CountingTracer(RenderPlan plan, SearchCounter counter) {
+    /** @param recordKinds whether to note what each camera ray hits first, for {@link #cameraKind()} */
+    CountingTracer(RenderPlan plan, boolean recordKinds) {
+        this(plan, new SearchCounter(), recordKinds);
+    }
+
+    private CountingTracer(RenderPlan plan, SearchCounter counter, boolean recordKinds) {
         super(plan.scene(), plan.offsets(), SearchTree.of(plan.scene().getSurfaces(), plan.acceleration(), counter),
                 plan.acceleration());
         this.counter = counter;
+        this.recordKinds = recordKinds;
     }
 
     /** The counts so far: rays and shading work counted here, intersection tests and boxes where they were made. */
@@ -44,7 +57,22 @@ final class CountingTracer extends SceneTracer {
     Vec3 cameraRadiance(Ray ray) {
         stats.camera++;
         counter.searchingFor(SearchCounter.CAMERA);
+        if (recordKinds) {
+            cameraKind = SurfaceKind.BACKGROUND;
+            cameraHitPending = true;
+        }
         return radiance(ray, 0);
+    }
+
+    /**
+     * What the last camera ray ({@link #cameraRadiance}) hit first, when this tracer records kinds:
+     * the kind of the primitive its closest hit names, or the background on a miss. Only a hit is
+     * shaded, and a camera ray's hit is shaded before any ray its shader sends, so the first
+     * {@link #shade} after a camera ray is that ray's closest hit: the kind comes from the record the
+     * scene's own search (the student's code) filled, and the search itself is not repeated.
+     */
+    SurfaceKind cameraKind() {
+        return cameraKind;
     }
 
     /**
@@ -53,6 +81,10 @@ final class CountingTracer extends SceneTracer {
      */
     @Override
     protected Vec3 shade(IntersectionRecord hit, Ray ray, int depth) {
+        if (recordKinds && cameraHitPending) {
+            cameraKind = SurfaceKind.of(hit.surface);
+            cameraHitPending = false;
+        }
         Set<Effect> shaderEffects = effects.computeIfAbsent(hit.surface.getShader(), Shader::allEffects);
         int lights = lights().size();
         if (shaderEffects.contains(Effect.SPECULAR)) {

@@ -81,23 +81,41 @@ public final class Renderer {
         return Math.max(1, (int) Math.round(Math.sqrt(samplesPerPixel)));
     }
 
+    /** Renders the plan's image; the result has no {@link RenderResult#kinds}. */
     public RenderResult render() {
+        return render(false);
+    }
+
+    /**
+     * Renders the plan's image, the same bits as {@link #render()}, and notes what each pixel's camera
+     * rays hit first ({@link RenderResult#kinds}): the primitive kind of the closest hit the scene's
+     * own search reported, as the shaders received it, so no ray is traced twice. Costs a byte per
+     * pixel and a few stores per camera ray; a plain {@link #render()} does none of it.
+     */
+    public RenderResult renderWithKinds() {
+        return render(true);
+    }
+
+    private RenderResult render(boolean recordKinds) {
         long startNanos = System.nanoTime();
         // The image is the plan's window (the whole image unless a study asks for part of it).
         int width = plan.window().width;
         int height = plan.window().height;
         Image image = new Image(width, height);
+        PixelKinds kinds = recordKinds ? new PixelKinds(width, height) : null;
         AtomicInteger nextRow = new AtomicInteger();
         List<CountingTracer> tracers = new ArrayList<>();
         List<Runnable> workers = new ArrayList<>();
         int workerCount = Math.min(threads, height);
         for (int k = 0; k < workerCount; k++) {
-            CountingTracer tracer = new CountingTracer(plan);
+            CountingTracer tracer = new CountingTracer(plan, recordKinds);
             tracers.add(tracer);
             workers.add(() -> {
+                // A pixel's samples' votes, per kind: one array per worker, only when recording.
+                int[] votes = recordKinds ? new int[SurfaceKind.count()] : null;
                 try {
                     for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
-                        renderRow(tracer, image, j);
+                        renderRow(tracer, image, j, kinds, votes);
                         rowsDone.incrementAndGet();
                     }
                 } catch (RuntimeException | Error e) {
@@ -136,11 +154,14 @@ public final class Renderer {
         RayStats total = new RayStats();
         tracers.forEach(t -> total.add(t.stats()));
         int n = plan.gridSide();
-        return new RenderResult(image, plan, total, n * n, workerCount, (System.nanoTime() - startNanos) / 1e9);
+        return new RenderResult(image, kinds, plan, total, n * n, workerCount, (System.nanoTime() - startNanos) / 1e9);
     }
 
-    /** Row {@code row} of the window, counted from its bottom, into the image of the window. */
-    private void renderRow(CountingTracer tracer, Image image, int row) {
+    /**
+     * Row {@code row} of the window, counted from its bottom, into the image of the window, and when
+     * {@code kinds} is not null into it too, each pixel by the kind most of its samples hit.
+     */
+    private void renderRow(CountingTracer tracer, Image image, int row, PixelKinds kinds, int[] votes) {
         Camera camera = scene.getCamera();
         int width = scene.getWidth();
         int height = scene.getHeight();
@@ -157,12 +178,18 @@ public final class Renderer {
                     double u = (i + pattern.x(i, j, a, c, n)) / width;
                     double v = (j + pattern.y(i, j, a, c, n)) / height;
                     Vec3 radiance = tracer.cameraRadiance(camera.generateRay(u, v));
+                    if (votes != null) {
+                        votes[tracer.cameraKind().ordinal()]++;
+                    }
                     r += radiance.x;
                     g += radiance.y;
                     b += radiance.z;
                 }
             }
             image.set(i - x0, row, new Vec3(r * weight, g * weight, b * weight));
+            if (kinds != null) {
+                kinds.set(i - x0, row, SurfaceKind.mostVoted(votes));
+            }
         }
     }
 }

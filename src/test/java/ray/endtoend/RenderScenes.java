@@ -8,6 +8,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import ray.image.PngWriter;
+import ray.render.PixelKinds;
+import ray.render.RenderResult;
 import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneFiles;
@@ -121,5 +123,19 @@ final class RenderScenes {
     /** A loaded scene rendered at its full size, as 8-bit pixels (PNG row order). */
     static BufferedImage render(Scene scene) {
         return PngWriter.toBufferedImage(new Renderer(scene, 0, 0).render().image, scene.getExposure());
+    }
+
+    /** A render as 8-bit pixels (PNG row order) and what each pixel shows in it. */
+    record Rendered(BufferedImage image, PixelKinds kinds) {
+    }
+
+    /**
+     * A loaded scene rendered at its full size as {@link #render} renders it (the same pixels), with
+     * the kind of surface each pixel's camera rays hit first ({@link Renderer#renderWithKinds()}),
+     * for saying what the pixels that differ show.
+     */
+    static Rendered renderWithKinds(Scene scene) {
+        RenderResult result = new Renderer(scene, 0, 0).renderWithKinds();
+        return new Rendered(PngWriter.toBufferedImage(result.image, scene.getExposure()), result.kinds);
     }
 }

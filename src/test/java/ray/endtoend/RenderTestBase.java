@@ -69,13 +69,18 @@ public abstract class RenderTestBase {
         BufferedImage reference = PngReader.read(referenceFile);
         // An exception from a student file propagates: StudentTaskRule reports it under the task whose
         // file threw, with the same first line as that task's unit tests, so the summary names it once.
-        BufferedImage yours = RenderScenes.render(loaded);
+        RenderScenes.Rendered rendered = RenderScenes.renderWithKinds(loaded);
+        BufferedImage yours = rendered.image();
         ImageDiff.Result result = ImageDiff.compare(reference, yours);
         RenderDiffReport.ran(getClass(), scene, result.passed());
         if (result.passed()) {
             return;
         }
-        String findings = usesLine(loaded);
+        // What the differing pixels show in this render, the worst of them, and the tasks the scene uses:
+        // the page's entry and the message say the same.
+        List<String> lines = new ArrayList<>(DifferingPixels.lines(result, rendered.kinds(), shown));
+        lines.add(usesLine(loaded));
+        String findings = String.join("\n", lines);
         String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference, findings);
         String differs = shown + " does not look like " + referenceShown + ": " + result.summary();
         String see = "\n    " + findings.replace("\n", "\n    ") + "\n    See your image, the reference and where they differ in " + report;
