@@ -21,7 +21,7 @@ import ray.tools.Handout;
  * <li>warm: with the project's daemon running, after an edit of one method body of Sphere.java (a
  * changed statement, so the class changes but not its API, as most edits do): {@code gradle test}
  * and {@code gradle test -Ptask=2}, each the median of several edits;</li>
- * <li>cold: the first {@code gradle test} of a freshly started daemon (a JVM option no running daemon
+ * <li>cold: the first {@code gradle test} of a freshly started daemon (a heap size no running daemon
  * has forces a new one), after the same kind of edit.</li>
  * </ul>
  * Writes the table to build/bench/student-loop.md. Run it on a quiet machine: the two cores are the
@@ -61,7 +61,8 @@ public final class StudentLoopBench {
         List<Double> cold = new ArrayList<>();
         for (int i = 0; i < COLD_RUNS; i++) {
             loop.edit();
-            cold.add(loop.run("-Dorg.gradle.jvmargs=-Dray1.bench.coldDaemon=" + System.nanoTime(), "test"));
+            // Gradle reuses a daemon whose heap size matches, whatever other options it was given.
+            cold.add(loop.run("-Dorg.gradle.jvmargs=-Xmx" + (700 + i) + "m", "test"));
         }
         Files.writeString(handout.resolve(EDITED), solution, StandardCharsets.UTF_8);
 
