@@ -80,7 +80,7 @@ public final class SphereAndTriangle {
     }
 
     /** A wrong triangle: it misses wherever β &gt; ½, so part of it shows the background. */
-    public static final class HalfMissing extends Triangle {
+    public static class HalfMissing extends Triangle {
         public HalfMissing(Vec3 v0, Vec3 v1, Vec3 v2) {
             super(v0, v1, v2);
         }
@@ -97,18 +97,16 @@ public final class SphereAndTriangle {
     }
 
     /** Both mistakes: the part it keeps is black, the rest shows the background. */
-    public static final class HalfMissingNormalFlipped extends Triangle {
+    public static final class HalfMissingNormalFlipped extends HalfMissing {
         public HalfMissingNormalFlipped(Vec3 v0, Vec3 v1, Vec3 v2) {
             super(v0, v1, v2);
         }
 
         @Override
         public boolean intersect(IntersectionRecord out, Ray ray) {
-            IntersectionRecord hit = new IntersectionRecord();
-            if (!super.intersect(hit, ray) || hit.beta > 0.5) {
+            if (!super.intersect(out, ray)) {
                 return false;
             }
-            out.set(hit);
             out.normal = out.normal.negate();
             return true;
         }

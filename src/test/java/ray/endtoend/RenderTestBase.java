@@ -76,14 +76,16 @@ public abstract class RenderTestBase {
         if (result.passed()) {
             return;
         }
-        // What the differing pixels show in this render, the worst of them, and the tasks the scene uses:
-        // the page's entry and the message say the same.
-        List<String> lines = new ArrayList<>(DifferingPixels.lines(result, rendered.kinds(), shown));
-        lines.add(usesLine(loaded));
-        String findings = String.join("\n", lines);
-        String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference, findings);
-        String differs = shown + " does not look like " + referenceShown + ": " + result.summary();
-        String see = "\n    " + findings.replace("\n", "\n    ") + "\n    See your image, the reference and where they differ in " + report;
+        // What the differing pixels show in this render and the worst of them, right under the first
+        // line; the tasks the scene uses and the report last. The page's entry says the same.
+        List<String> pixels = DifferingPixels.lines(result, rendered.kinds(), shown);
+        String uses = usesLine(loaded);
+        List<String> findings = new ArrayList<>(pixels);
+        findings.add(uses);
+        String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference, String.join("\n", findings));
+        StringBuilder differs = new StringBuilder(shown + " does not look like " + referenceShown + ": " + result.summary() + ".");
+        pixels.forEach(line -> differs.append("\n    ").append(line));
+        String see = "\n    " + uses + "\n    See your image, the reference and where they differ in " + report;
         List<String> unfinished = new ArrayList<>();
         List<String> unfinishedTasks = new ArrayList<>();
         for (StudentTask other : BasicChecks.tasksOf(loaded)) {
@@ -101,15 +103,15 @@ public abstract class RenderTestBase {
             // The first line says it all, since a test summary may show only that line.
             throw new NotThisTasksFault(shown + " also needs " + inWords(unfinishedTasks)
                     + (unfinished.size() == 1 ? ", which does" : ", which do") + " not work yet: this test judges your " + task().label() + " code once "
-                    + (unfinished.size() == 1 ? "it works" : "they work") + ".\n    " + differs + ".\n    Your " + task().label()
+                    + (unfinished.size() == 1 ? "it works" : "they work") + ".\n    " + differs + "\n    Your " + task().label()
                     + " code passes its basic check; these fail theirs:\n      " + String.join("\n      ", unfinished) + see);
         }
         StringBuilder message = new StringBuilder(differs);
         if (own != null) {
-            message.append(".\n    Your ").append(task().label()).append(" code fails a basic check: ").append(own);
+            message.append("\n    Your ").append(task().label()).append(" code fails a basic check: ").append(sentence(own));
         }
         if (!unfinished.isEmpty()) {
-            message.append("\n    Unfinished too: ").append(String.join("; ", unfinished));
+            message.append("\n    Unfinished too: ").append(sentence(String.join("; ", unfinished)));
         }
         fail(message + see);
     }
@@ -125,6 +127,11 @@ public abstract class RenderTestBase {
             labels.add(t.label());
         }
         return "The scene uses " + inWords(labels) + ".";
+    }
+
+    /** The text with a full stop, unless it already ends a sentence ("is it still the stub?"). */
+    private static String sentence(String text) {
+        return text.matches("(?s).*[.?!]$") ? text : text + ".";
     }
 
     /** "A", "A and B", "A, B and C". */

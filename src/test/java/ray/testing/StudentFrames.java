@@ -1,32 +1,26 @@
 package ray.testing;
 
 import java.nio.file.Path;
-import ray.testing.StudentTask;
 
-/** Which student file an exception came from: the first frame of its stack trace in a task's file. */
+/** Which student file threw an exception: the first frame of its stack trace outside the JDK, when it is a task's file. */
 public final class StudentFrames {
     private StudentFrames() {
     }
 
-    /** The task whose file holds the deepest frame of {@code e} in any task's file, or null. */
-    public static StudentTask taskThatThrew(Throwable e) {
+    /**
+     * The task whose file threw {@code e} itself, or null: the first frame outside the JDK must be in a
+     * task's file (an IndexOutOfBoundsException from a list that Group.java indexed counts; an
+     * exception the framework threw, even when a student file called it, does not, since the data
+     * that upset it may come from any task).
+     */
+    public static StudentTask taskWhoseFileThrew(Throwable e) {
         for (StackTraceElement frame : e.getStackTrace()) {
-            StudentTask task = taskOf(frame);
-            if (task != null) {
-                return task;
+            String c = frame.getClassName();
+            if (!(c.startsWith("java.") || c.startsWith("javax.") || c.startsWith("jdk.") || c.startsWith("sun.") || c.startsWith("com.sun."))) {
+                return taskOf(frame);
             }
         }
         return null;
-    }
-
-    /** " at Sphere.java:57" for that frame, or "" when no task's file is on the stack. */
-    public static String where(Throwable e) {
-        for (StackTraceElement frame : e.getStackTrace()) {
-            if (taskOf(frame) != null) {
-                return " at " + frame.getFileName() + ":" + frame.getLineNumber();
-            }
-        }
-        return "";
     }
 
     private static StudentTask taskOf(StackTraceElement frame) {

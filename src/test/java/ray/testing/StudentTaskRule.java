@@ -70,10 +70,10 @@ public final class StudentTaskRule implements TestRule {
                     UnfinishedTasks.didNotFinish(task, bonus, test);
                     throw explained(label, "took longer than " + seconds + " s: is there a loop that never ends?", e);
                 } catch (Exception | VirtualMachineError | LinkageError e) {
-                    // Reported under the task whose file threw, whichever task's test ran it (a render
-                    // test runs several), with a first line that does not depend on the test: the
-                    // summary then names one exception once (gradle/test-report.gradle).
-                    StudentTask thrower = StudentFrames.taskThatThrew(e instanceof ExceptionInInitializerError && e.getCause() != null ? e.getCause() : e);
+                    // Reported under the task whose file threw it, whichever task's test ran it (a
+                    // render test runs several), with a first line that does not depend on the test:
+                    // the summary then names one exception once (gradle/test-report.gradle).
+                    StudentTask thrower = StudentFrames.taskWhoseFileThrew(e instanceof ExceptionInInitializerError && e.getCause() != null ? e.getCause() : e);
                     StudentTask blamed = thrower == null ? task : thrower;
                     String blamedLabel = "[" + blamed.label() + (bonus ? ", bonus" : "") + "] ";
                     throw explained(blamedLabel, whatWentWrong(e), e, blamed);
