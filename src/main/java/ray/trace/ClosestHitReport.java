@@ -45,8 +45,10 @@ final class ClosestHitReport {
         }
         out.println(Fmt.row("  ", "surface", surfacePath(hit, roots, names)));
         out.println(Fmt.row("  ", "t", Fmt.num(hit.t)));
+        flag(RecordChecks.outsideSegment(hit.t, ray, "camera ray"));
         out.println(Fmt.row("  ", "location", Fmt.vec(hit.location)));
         out.println(Fmt.row("  ", "normal", Fmt.vec(hit.normal)));
+        flag(RecordChecks.notUnit(hit.normal));
         out.println(Fmt.row("  ", "shader", hit.surface == null ? "none (the record names no surface)"
                 : ShadingReport.describe(hit.surface.getShader())));
         consistency(hit, roots, nearest);
@@ -66,6 +68,13 @@ final class ClosestHitReport {
             out.println("  ! shading threw " + Failure.oneLine(e));
             out.println();
             return null;
+        }
+    }
+
+    /** A "!" line under the row it is about, when there is something to say. */
+    private void flag(String problem) {
+        if (problem != null) {
+            out.println(Fmt.row("  ", "!", problem));
         }
     }
 

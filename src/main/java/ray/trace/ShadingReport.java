@@ -80,7 +80,9 @@ final class ShadingReport {
         out.println(in + (shader instanceof Phong
                 ? "L = Σ over lights of (kd ⊙ I · max(0, n·l) + ks ⊙ I · max(0, n·h)^p) / r²"
                 : "L = Σ over lights of kd ⊙ I · max(0, n·l) / r²") + ", without the lights whose shadow ray is blocked");
-        out.println(Fmt.row(in, "n", Fmt.vec(hit.normal) + "   (the hit's unit normal)"));
+        String notUnit = RecordChecks.notUnit(hit.normal);
+        out.println(Fmt.row(in, "n", Fmt.vec(hit.normal) + (notUnit == null ? "   (the hit's unit normal)"
+                : "   (the hit's normal, NOT unit length: |n| = " + Fmt.num(hit.normal.length()) + ")")));
         out.println(Fmt.row(in, "e", Fmt.vec(ray.direction.normalized().negate()) + "   (unit vector toward the eye)"));
         Texture texture = ShaderParameters.texture(shader);
         if (texture != null) {

@@ -95,6 +95,11 @@ final class ShadowCheck {
             ProbeNode b = blockers.get(k);
             out.println(Fmt.row(indent, k == 0 ? "shadow" : "", (k == 0 ? "BLOCKED by " : "and by ") + ProbeTree.path(roots, b, names)
                     + " at t = " + Fmt.num(b.t()) + ", at " + Fmt.vec(b.worldLocation())));
+            // A blocker behind the shadow ray's start (a surface that ignores ray.start) darkens the point wrongly.
+            String outside = RecordChecks.outsideSegment(b.t(), ray, "shadow ray");
+            if (outside != null) {
+                out.println(Fmt.row(indent, "!", outside));
+            }
         }
         if (blockers.size() > MAX_BLOCKERS) {
             out.println(Fmt.row(indent, "", "and " + (blockers.size() - MAX_BLOCKERS) + " more primitives"));

@@ -1,0 +1,161 @@
+package ray.trace;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertNull;
+import static org.junit.Assert.assertTrue;
+import static ray.testing.Asserts.v;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import org.junit.Test;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.camera.PerspectiveCamera;
+import ray.math.Vec3;
+import ray.scene.Scene;
+import ray.shading.Lambertian;
+import ray.shading.Light;
+import ray.surface.Surface;
+
+/**
+ * {@code ray1 trace} checks what a hit record claims: a t outside the ray's segment (a surface that
+ * ignores ray.start, whose blocker behind a shadow ray's start darkens a lit point) and a normal
+ * that is not unit length (a sphere that assumes |d| = 1). Both were the real causes behind a
+ * student's wrong sphere render that the trace showed without saying so.
+ */
+public class RecordChecksTest {
+    /** A wall hit at t = 1 by any ray whose segment holds 1, with the given normal. */
+    private static final class Wall extends Surface {
+        private final Vec3 normal;
+
+        Wall(Vec3 normal) {
+            this.normal = normal;
+        }
+
+        @Override
+        public boolean intersect(IntersectionRecord out, Ray ray) {
+            if (!(ray.start < 1 && 1 < ray.end)) {
+                return false;
+            }
+            out.t = 1;
+            out.location = ray.pointAt(1);
+            out.normal = normal;
+            out.surface = this;
+            return true;
+        }
+
+        @Override
+        public String toString() {
+            return "Wall";
+        }
+    }
+
+    /** Reports a hit at t = −2 on any ray heading toward +z (a shadow ray here), ignoring the segment; misses the rest. */
+    private static final class IgnoresStart extends Surface {
+        @Override
+        public boolean intersect(IntersectionRecord out, Ray ray) {
+            if (ray.direction.z <= 0) {
+                return false;
+            }
+            out.t = -2;
+            out.location = ray.pointAt(-2);
+            out.normal = v(0, 0, 1);
+            out.surface = this;
+            return true;
+        }
+
+        @Override
+        public String toString() {
+            return "IgnoresStart";
+        }
+    }
+
+    @Test
+    public void tInsideTheSegmentPassesAndOutsideIsNamedBySide() {
+        Ray ray = new Ray(v(0, 0, 0), v(0, 0, 1), 0, 10);
+        assertNull(RecordChecks.outsideSegment(4, ray, "camera ray"));
+        String behind = RecordChecks.outsideSegment(-9.5, ray, "shadow ray");
+        assertEquals("t = " + Fmt.num(-9.5) + " lies behind the shadow ray's start (0): a hit must lie in (start, end);"
+                + " does that intersect check ray.start?", behind);
+        assertTrue(RecordChecks.outsideSegment(0, ray, "camera ray").contains("behind the camera ray's start"));
+        assertTrue(RecordChecks.outsideSegment(10, ray, "camera ray").contains("beyond the camera ray's end (10)"));
+        assertTrue(RecordChecks.outsideSegment(Double.NaN, ray, "camera ray").startsWith("t is NaN"));
+    }
+
+    @Test
+    public void aNormalIsUnitWithinRoundingAndOtherwiseNamedWithItsLength() {
+        assertNull(RecordChecks.notUnit(v(0, 0.6, 0.8)));
+        assertNull(RecordChecks.notUnit(v(1 + 1e-9, 0, 0)));
+        assertNull(RecordChecks.notUnit(null));
+        String longer = RecordChecks.notUnit(v(0, 0, 2.4691));
+        assertTrue(longer, longer.startsWith("the normal is not unit length: |n| = 2.4691;"));
+    }
+
+    @Test
+    public void theTraceFlagsANormalThatIsNotUnitLength() {
+        String out = trace(new Wall(v(0, 0, 2.5)), null);
+        assertTrue(out, out.contains("!            the normal is not unit length: |n| = 2.5;"));
+        assertTrue(out, out.contains("(the hit's normal, NOT unit length: |n| = 2.5)"));
+        assertFalse(out, out.contains("(the hit's unit normal)"));
+    }
+
+    @Test
+    public void theTraceFlagsAShadowBlockerBehindTheShadowRaysStart() {
+        String out = trace(new Wall(v(0, 0, 1)), new IgnoresStart());
+        assertTrue(out, out.contains("BLOCKED by #2 IgnoresStart at t = " + Fmt.num(-2)));
+        assertTrue(out, out.contains("!            t = " + Fmt.num(-2) + " lies behind the shadow ray's start (0)"));
+        assertTrue(out, out.contains("does that intersect check ray.start?"));
+        assertTrue(out, out.contains("adds         nothing: the shadow ray is blocked"));
+        // The camera ray's hit is the wall's, inside its segment, with a unit normal: nothing flagged there.
+        assertFalse(out, out.contains("camera ray's start"));
+        assertFalse(out, out.contains("not unit length"));
+    }
+
+    @Test
+    public void theTraceFlagsAClosestHitBehindTheCameraRaysStart() {
+        // A wall that reports the ray's t = −1 point (behind the eye) on any ray, ignoring the segment.
+        Surface behind = new Surface() {
+            @Override
+            public boolean intersect(IntersectionRecord out, Ray ray) {
+                out.t = -1;
+                out.location = ray.pointAt(-1);
+                out.normal = v(0, 0, 1);
+                out.surface = this;
+                return true;
+            }
+
+            @Override
+            public String toString() {
+                return "Behind";
+            }
+        };
+        String out = trace(behind, null);
+        assertTrue(out, out.contains("!            t = " + Fmt.num(-1) + " lies behind the camera ray's start (0)"));
+    }
+
+    /** The trace of the one pixel of a 1×1 view of {@code wall} (and {@code other}) from (0, 0, 5), lit from (0, 0, 10). */
+    private static String trace(Surface wall, Surface other) {
+        PerspectiveCamera camera = new PerspectiveCamera();
+        camera.setViewPoint(v(0, 0, 5));
+        camera.complete();
+        Scene scene = new Scene();
+        scene.setCamera(camera);
+        scene.setImage(1, 1);
+        Lambertian gray = new Lambertian(v(0.5, 0.5, 0.5));
+        scene.addShader(gray);
+        wall.setShader(gray);
+        scene.addSurface(wall);
+        if (other != null) {
+            other.setShader(gray);
+            scene.addSurface(other);
+        }
+        scene.addLight(new Light(v(0, 0, 10), v(1, 1, 1)));
+        scene.complete();
+        StringWriter text = new StringWriter();
+        try (PrintWriter out = new PrintWriter(text)) {
+            new PixelTrace(scene, "walls.xml", false, 0).run(0, 0, out);
+        }
+        return text.toString();
+    }
+}
