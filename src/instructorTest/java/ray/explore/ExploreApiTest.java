@@ -123,6 +123,8 @@ public class ExploreApiTest {
             JsonObject closest = story.getAsJsonObject("closest");
             assertEquals(t, closest.get("t").getAsDouble(), 1e-12);
             assertEquals("✓ the nearest hit in the list above", closest.get("check").getAsString());
+            // The solution's hit claims nothing the contract rules out (RecordChecksTest covers the flags).
+            assertEquals(0, closest.getAsJsonArray("recordChecks").size());
             JsonArray lights = story.getAsJsonArray("lights");
             assertEquals(2, lights.size());
             JsonObject key = lights.get(0).getAsJsonObject();

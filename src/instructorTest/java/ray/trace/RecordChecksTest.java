@@ -16,6 +16,7 @@ import ray.math.Vec3;
 import ray.scene.Scene;
 import ray.shading.Lambertian;
 import ray.shading.Light;
+import ray.surface.SphereShape;
 import ray.surface.Surface;
 
 /**
@@ -93,6 +94,18 @@ public class RecordChecksTest {
     }
 
     @Test
+    public void everyFailingCheckOfAHitIsListedInTheTracesOrder() {
+        IntersectionRecord hit = new IntersectionRecord();
+        hit.t = -3;
+        hit.normal = v(0, 0, 2);
+        hit.location = v(0, 0, 8);
+        java.util.List<String> flags = RecordChecks.of(hit, new Ray(v(0, 0, 5), v(0, 0, -1)));
+        assertEquals(flags.toString(), 2, flags.size());
+        assertTrue(flags.get(0), flags.get(0).startsWith("t = " + Fmt.num(-3) + " lies behind the camera ray's start"));
+        assertTrue(flags.get(1), flags.get(1).startsWith("the normal is not unit length: |n| = 2;"));
+    }
+
+    @Test
     public void theTraceFlagsANormalThatIsNotUnitLength() {
         String out = trace(new Wall(v(0, 0, 2.5)), null);
         assertTrue(out, out.contains("!            the normal is not unit length: |n| = 2.5;"));
@@ -132,6 +145,53 @@ public class RecordChecksTest {
         };
         String out = trace(behind, null);
         assertTrue(out, out.contains("!            t = " + Fmt.num(-1) + " lies behind the camera ray's start (0)"));
+    }
+
+    /** A sphere that reports the larger root of the quadratic, where the ray leaves it; or the smaller, as it should. */
+    private static final class RootSphere extends SphereShape {
+        private final boolean far;
+
+        RootSphere(boolean far) {
+            this.far = far;
+        }
+
+        @Override
+        public boolean intersect(IntersectionRecord out, Ray ray) {
+            Vec3 oc = ray.origin.minus(center);
+            double a = ray.direction.dot(ray.direction);
+            double b = 2 * oc.dot(ray.direction);
+            double c = oc.dot(oc) - radius * radius;
+            double disc = b * b - 4 * a * c;
+            if (disc < 0) {
+                return false;
+            }
+            double t = (-b + (far ? 1 : -1) * Math.sqrt(disc)) / (2 * a);
+            if (!(ray.start < t && t < ray.end)) {
+                return false;
+            }
+            out.t = t;
+            out.location = ray.pointAt(t);
+            out.normal = out.location.minus(center).times(1 / radius);
+            out.surface = this;
+            return true;
+        }
+
+        @Override
+        public String toString() {
+            return "RootSphere";
+        }
+    }
+
+    /** From (0, 0, 5) the unit sphere's roots are t = 4 (entering at z = 1) and t = 6 (leaving at z = −1, normal (0, 0, −1)). */
+    @Test
+    public void theTraceFlagsASphereHitAtItsFarRootFromOutside() {
+        String far = trace(new RootSphere(true), null);
+        assertTrue(far, far.contains("t            6"));
+        assertTrue(far, far.contains("!            the ray starts outside the sphere, yet this normal faces away from the eye (n·d > 0)"));
+        assertTrue(far, far.contains("is this the far root?"));
+        String near = trace(new RootSphere(false), null);
+        assertTrue(near, near.contains("t            4"));
+        assertFalse(near, near.contains("far root"));
     }
 
     /** The trace of the one pixel of a 1×1 view of {@code wall} (and {@code other}) from (0, 0, 5), lit from (0, 0, 10). */

@@ -90,7 +90,53 @@ public class TextureReportTest {
     public void aLookupThatReturnsAnotherColorIsFlaggedAsTask5() {
         String out = report(new StubTexture(), hitAt(0.3, 0.9));
         assertTrue(out, out.contains("!            StubTexture.getTexColor returned (0, 0, 0), not that texel's color:"
-                + " is it still the stub? See TODO(Task 5)"));
+                + " black, which this texel is not: is it still the stub? See TODO(Task 5)"));
+    }
+
+    /** A lookup written out with one mistake: rows not flipped, columns mirrored, or rounded twice. */
+    private static final class WrongLookup extends Texture {
+        private final String mistake;
+
+        WrongLookup(String mistake) {
+            super(distinctTexels());
+            this.mistake = mistake;
+        }
+
+        @Override
+        public Vec3 getTexColor(double u, double v) {
+            int column = (int) (u * 4 + 0.5);
+            int rowFromTop = (int) ((1 - v) * 2 + 0.5);
+            switch (mistake) {
+                case "rows":
+                    return image.get(column, rowFromTop); // image.get counts from the bottom: the row is not flipped
+                case "columns":
+                    return image.get(3 - column, 1 - rowFromTop);
+                default:
+                    return image.get((int) Math.round(u * 4 + 0.5), 1 - rowFromTop); // rounds twice
+            }
+        }
+    }
+
+    /** (0.3, 0.9) picks texel (1, 0), 8-bit (10, 100, 7); its mirrored row's texel (1, 1) is (10, 0, 7). */
+    @Test
+    public void aTexelOfTheMirroredRowIsNamedAsFlippedRows() {
+        String out = report(new WrongLookup("rows"), hitAt(0.3, 0.9));
+        assertTrue(out, out.contains("not that texel's color: that is texel (1, 1), the same column in the mirrored row:"
+                + " are the rows flipped?"));
+        assertFalse(out, out.contains("stub"));
+    }
+
+    @Test
+    public void aTexelOfTheMirroredColumnIsNamedAsSuch() {
+        String out = report(new WrongLookup("columns"), hitAt(0.3, 0.9));
+        assertTrue(out, out.contains("that is texel (2, 0), the same row in the mirrored column"));
+    }
+
+    /** (0.05, 0.9): (int) (0.2 + ½) = column 0, but Math.round(0.2 + ½) = Math.round(0.7) = column 1, a neighbour. */
+    @Test
+    public void aNeighbouringTexelPointsAtTheRounding() {
+        String out = report(new WrongLookup("round twice"), hitAt(0.05, 0.9));
+        assertTrue(out, out.contains("that is the neighbouring texel (1, 0): is u·W or (1 − v)·H rounded another way"));
     }
 
     /**

@@ -45,10 +45,9 @@ final class ClosestHitReport {
         }
         out.println(Fmt.row("  ", "surface", surfacePath(hit, roots, names)));
         out.println(Fmt.row("  ", "t", Fmt.num(hit.t)));
-        flag(RecordChecks.outsideSegment(hit.t, ray, "camera ray"));
         out.println(Fmt.row("  ", "location", Fmt.vec(hit.location)));
         out.println(Fmt.row("  ", "normal", Fmt.vec(hit.normal)));
-        flag(RecordChecks.notUnit(hit.normal));
+        RecordChecks.of(hit, ray).forEach(this::flag);
         out.println(Fmt.row("  ", "shader", hit.surface == null ? "none (the record names no surface)"
                 : ShadingReport.describe(hit.surface.getShader())));
         consistency(hit, roots, nearest);

@@ -199,6 +199,12 @@ public final class PixelStory {
         Shader shader = hit.surface == null ? null : hit.surface.getShader();
         c.addProperty("shader", hit.surface == null ? "none (the record names no surface)" : ShadingReport.describe(shader));
         c.addProperty("check", ClosestHitReport.check(hit, roots, nearest, names));
+        // What the record claims that the contract rules out, as `ray1 trace` flags it.
+        JsonArray flags = new JsonArray();
+        for (String flag : RecordChecks.of(hit, ray)) {
+            flags.add(flag);
+        }
+        c.add("recordChecks", flags);
         story.add("closest", c);
         String lacks = ClosestHitReport.lacks(hit);
         if (lacks != null) {

@@ -632,6 +632,7 @@ function closestSection(t) {
       ['normal', fmtVec(c.normal)],
       ['shader', c.shader || null],
     ]));
+    for (const flag of c.recordChecks || []) parts.push(el('p', { class: 'error' }, `! ${flag}`));
     if (c.check) parts.push(el('p', { class: c.check.startsWith('!') ? 'error' : 'ok' }, c.check));
   } else if (!t.closestError) {
     const background = Array.isArray(t.background) ? ` ${fmtVec(t.background)}` : '';
