@@ -125,6 +125,19 @@ public class RecordChecksTest {
         assertFalse(out, out.contains("not unit length"));
     }
 
+    /** The explore page's story of the same pixel carries the same checks. */
+    @Test
+    public void theExploreStoryCarriesTheSameChecks() {
+        com.google.gson.JsonObject shadowed = new PixelStory(scene(new Wall(v(0, 0, 1)), new IgnoresStart()), "walls.xml").of(0, 0, null, null);
+        com.google.gson.JsonObject blocker = shadowed.getAsJsonArray("lights").get(0).getAsJsonObject().getAsJsonObject("blocker");
+        assertTrue(blocker.toString(), blocker.get("check").getAsString().contains("lies behind the shadow ray's start"));
+        assertEquals(0, shadowed.getAsJsonObject("closest").getAsJsonArray("recordChecks").size());
+        com.google.gson.JsonObject scaled = new PixelStory(scene(new Wall(v(0, 0, 2.5)), null), "walls.xml").of(0, 0, null, null);
+        com.google.gson.JsonArray checks = scaled.getAsJsonObject("closest").getAsJsonArray("recordChecks");
+        assertEquals(checks.toString(), 1, checks.size());
+        assertTrue(checks.toString(), checks.get(0).getAsString().startsWith("the normal is not unit length: |n| = 2.5;"));
+    }
+
     @Test
     public void theTraceFlagsAClosestHitBehindTheCameraRaysStart() {
         // A wall that reports the ray's t = −1 point (behind the eye) on any ray, ignoring the segment.
@@ -194,8 +207,17 @@ public class RecordChecksTest {
         assertFalse(near, near.contains("far root"));
     }
 
-    /** The trace of the one pixel of a 1×1 view of {@code wall} (and {@code other}) from (0, 0, 5), lit from (0, 0, 10). */
+    /** The trace of the one pixel of {@link #scene}. */
     private static String trace(Surface wall, Surface other) {
+        StringWriter text = new StringWriter();
+        try (PrintWriter out = new PrintWriter(text)) {
+            new PixelTrace(scene(wall, other), "walls.xml", false, 0).run(0, 0, out);
+        }
+        return text.toString();
+    }
+
+    /** A 1×1 view of {@code wall} (and {@code other}) from (0, 0, 5), lit from (0, 0, 10). */
+    private static Scene scene(Surface wall, Surface other) {
         PerspectiveCamera camera = new PerspectiveCamera();
         camera.setViewPoint(v(0, 0, 5));
         camera.complete();
@@ -212,10 +234,6 @@ public class RecordChecksTest {
         }
         scene.addLight(new Light(v(0, 0, 10), v(1, 1, 1)));
         scene.complete();
-        StringWriter text = new StringWriter();
-        try (PrintWriter out = new PrintWriter(text)) {
-            new PixelTrace(scene, "walls.xml", false, 0).run(0, 0, out);
-        }
-        return text.toString();
+        return scene;
     }
 }

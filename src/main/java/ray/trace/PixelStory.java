@@ -255,6 +255,9 @@ public final class PixelStory {
                 blocker.addProperty("path", ProbeTree.path(f.shadow.roots, b, names));
                 blocker.add("t", num(b.t()));
                 blocker.add("location", vec(b.worldLocation()));
+                // A blocker behind the shadow ray's start, as `ray1 trace` flags it, or null.
+                String outside = RecordChecks.outsideSegment(b.t(), f.shadow.ray, "shadow ray");
+                blocker.add("check", outside == null ? JsonNull.INSTANCE : new JsonPrimitive(outside));
                 l.add("blocker", blocker);
             }
             String problem = f.shadow.problem();

@@ -657,7 +657,7 @@ function lightBlock(light) {
   if (light.blocked && light.blocker) {
     const b = light.blocker;
     blocked = el('span', { class: 'error' }, `blocked by ${b.path} at t = ${fmtText(b.tText, b.t)}`,
-      Array.isArray(b.location) ? ` ${fmtVec(b.location)}` : '');
+      Array.isArray(b.location) ? ` ${fmtVec(b.location)}` : '', b.check ? ` (! ${b.check})` : '');
   } else if (light.blocked) {
     blocked = el('span', { class: 'error' }, 'blocked');
   } else if (ray) {
