@@ -125,19 +125,13 @@ final class RenderFeedback {
 
     /** The pixel (x from the left, y from the top) where the two differ most in any channel, or null when their sizes differ. */
     static int[] worstPixel(BufferedImage a, BufferedImage b) {
-        // The render tests' own per-pixel difference (the largest of the three channels').
+        // The render tests' own per-pixel difference and worst pixel, as their failure message names it.
         ImageDiff.Result diff = ImageDiff.compare(a, b);
         if (!diff.sameSize()) {
             return null;
         }
-        for (int y = 0; y < a.getHeight(); y++) {
-            for (int x = 0; x < a.getWidth(); x++) {
-                if (diff.differenceAt(x, y) == diff.maxDifference()) {
-                    return new int[] {x, y};
-                }
-            }
-        }
-        return null;
+        ImageDiff.Pixel worst = diff.worstPixel();
+        return new int[] {worst.x(), worst.y()};
     }
 
     /** Adds the picture as PrairieLearn's {label, url} and as a table cell, its caption to the row below. */

@@ -5,14 +5,11 @@ import java.util.Set;
 import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
+import ray.render.SurfaceKind;
 import ray.render.TaskProbes;
 import ray.render.TaskProbes.Part;
 import ray.scene.Scene;
-import ray.surface.Cylinder;
-import ray.surface.Sphere;
 import ray.surface.Surface;
-import ray.surface.Triangle;
-import ray.surface.TriangleSet;
 import ray.testing.StudentTask;
 
 /**
@@ -41,12 +38,12 @@ final class BasicChecks {
     }
 
     private static void addTasksOf(Surface surface, Set<StudentTask> tasks) {
-        if (surface instanceof Sphere) {
-            tasks.add(StudentTask.SPHERE);
-        } else if (surface instanceof Triangle || surface instanceof TriangleSet) {
-            tasks.add(StudentTask.TRIANGLE);
-        } else if (surface instanceof Cylinder) {
-            tasks.add(StudentTask.CYLINDER);
+        // The primitive's task as the renderer's pixel kinds name it (a mesh's or box's parts are triangles).
+        int number = SurfaceKind.of(surface).task;
+        for (StudentTask task : StudentTask.values()) {
+            if (task.number == number) {
+                tasks.add(task);
+            }
         }
         for (Surface child : surface.children()) {
             addTasksOf(child, tasks);

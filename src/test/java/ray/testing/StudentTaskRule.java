@@ -45,7 +45,7 @@ public final class StudentTaskRule implements TestRule {
     @Override
     public Statement apply(Statement base, Description description) {
         boolean bonus = isBonus(description);
-        String label = "[" + task.label() + (bonus ? ", bonus" : "") + "] ";
+        String label = labelOf(task, bonus);
         Statement limited = Timeout.builder().withTimeout(seconds, TimeUnit.SECONDS).withLookingForStuckThread(true)
                 .build().apply(base, description);
         // A hidden test is not named to the student, not even by its method.
@@ -75,11 +75,16 @@ public final class StudentTaskRule implements TestRule {
                     // the summary then names one exception once (gradle/test-report.gradle).
                     StudentTask thrower = StudentFrames.taskWhoseFileThrew(e instanceof ExceptionInInitializerError && e.getCause() != null ? e.getCause() : e);
                     StudentTask blamed = thrower == null ? task : thrower;
-                    String blamedLabel = "[" + blamed.label() + (bonus ? ", bonus" : "") + "] ";
+                    String blamedLabel = labelOf(blamed, bonus);
                     throw explained(blamedLabel, whatWentWrong(e), e, blamed);
                 }
             }
         };
+    }
+
+    /** "[Task 2 (Sphere)] " or "[Task 2 (Sphere), bonus] ", which starts a failure's message. */
+    private static String labelOf(StudentTask task, boolean bonus) {
+        return "[" + task.label() + (bonus ? ", bonus" : "") + "] ";
     }
 
     private static String simpleName(Description description) {
