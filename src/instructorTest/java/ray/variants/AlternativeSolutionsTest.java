@@ -115,6 +115,26 @@ public class AlternativeSolutionsTest {
     }
 
     /**
+     * The mistakes of a real student's attempt at the course's Ray 1, written as variants: a sphere
+     * and a triangle that ignore the ray's segment, a group that returns whether its last child was
+     * hit, a group that searches its own segment, a camera in float, a lookup that rounds twice.
+     * Each must cost points in its own task (the float camera only in the hidden tests' 1e-12).
+     */
+    @Test
+    public void mistakesOfARealAttemptLosePointsInTheirOwnTask() throws Exception {
+        for (Variant wrong : List.of(Variant.wrong("sphere-ignores-segment", 2), Variant.wrong("triangle-ignores-segment", 3),
+                Variant.wrong("group-last-hit", 4), Variant.wrong("group-own-segment", 4), Variant.wrong("camera-float-casts", 1),
+                Variant.wrong("texture-round-twice", 5))) {
+            List<VariantGrading.Outcome> outcomes = VariantGrading.run(wrong, (task, type) -> task == wrong.task, work);
+            assertTrue(wrong + " ran no test of its task", !outcomes.isEmpty());
+            List<VariantGrading.Outcome> lost = outcomes.stream().filter(o -> !o.bonus && !o.passed()).collect(Collectors.toList());
+            summarize(wrong, outcomes);
+            assertTrue(wrong + " must lose regular points of Task " + wrong.task + ", but passed all "
+                    + outcomes.size() + " of its tests", !lost.isEmpty());
+        }
+    }
+
+    /**
      * Rounding v·H + 0.5 down and then flipping to H − j picks the nearest texel everywhere except
      * exactly on an edge between rows, so it must lose the tests on texel edges and nothing else: a
      * rule stated to the last tie costs only the tests about the tie.

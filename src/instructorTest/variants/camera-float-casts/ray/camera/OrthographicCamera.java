@@ -1,0 +1,14 @@
+package ray.camera;
+
+import ray.Ray;
+import ray.math.Vec3;
+
+/** Known wrong: computes the image-plane coordinates in float, (float) ((imageU − 0.5)·viewWidth), so rays are off by float rounding, some 1e-8 of the view. */
+public class OrthographicCamera extends Camera {
+    @Override
+    public Ray generateRay(double imageU, double imageV) {
+        double s = (float) ((imageU - 0.5) * viewWidth);
+        double t = (float) ((imageV - 0.5) * viewHeight);
+        return new Ray(viewPoint.plus(u.times(s)).plus(v.times(t)), w.negate());
+    }
+}

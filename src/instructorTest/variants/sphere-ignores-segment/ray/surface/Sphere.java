@@ -1,0 +1,39 @@
+package ray.surface;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+
+/** Known wrong: takes the near root (−b − √disc)/2a without checking it against ray.start and ray.end, so hits behind the ray's start count (a shadow ray is blocked by what lies behind the point). */
+public class Sphere extends SphereShape {
+    public Sphere() {
+    }
+
+    public Sphere(Vec3 center, double radius) {
+        setCenter(center);
+        setRadius(radius);
+    }
+
+    @Override
+    public boolean intersect(IntersectionRecord out, Ray ray) {
+        Vec3 d = ray.direction;
+        Vec3 ec = ray.origin.minus(center);
+        double a = d.dot(d);
+        double b = 2 * d.dot(ec);
+        double c = ec.dot(ec) - radius * radius;
+        double disc = b * b - 4 * a * c;
+        if (disc < 0) {
+            return false;
+        }
+        double sqrtDisc = Math.sqrt(disc);
+        double t = (-b - sqrtDisc) / (2 * a);
+        out.t = t;
+        out.location = ray.pointAt(t);
+        out.normal = out.location.minus(center).times(1 / radius);
+        out.surface = this;
+        // The textbook's (φ + π)/2π and (θ + π/2)/π, asin unclamped as students write it.
+        out.texU = (Math.atan2(out.normal.x, out.normal.z) + Math.PI) / (2 * Math.PI);
+        out.texV = (Math.asin(out.normal.y) + Math.PI / 2) / Math.PI;
+        return true;
+    }
+}
