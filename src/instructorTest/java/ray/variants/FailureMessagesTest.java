@@ -58,6 +58,45 @@ public class FailureMessagesTest {
         assertTrue("failures of " + wrong + " that do not show the returned t:" + silent, silent.length() == 0);
     }
 
+    /**
+     * A group that searches its own segment (1e-3, ∞) finds the plane the caller's segment (1.6, 10)
+     * leaves out, and a hit outside (0, 3.5): both failures say that t lies outside the segment and
+     * that a group searches the caller's.
+     */
+    @Test
+    public void aGroupWithItsOwnSegmentIsToldToSearchTheCallers() throws Exception {
+        Variant wrong = Variant.wrong("group-own-segment", 4);
+        for (String[] c : new String[][] {{"ray.hidden.Task4HiddenTest#childrenSeeTheCallersOriginAndDirection",
+                "your intersect returned t = 1.5; t = 1.5 is not inside the ray's segment (1.6, 10)"},
+                {"ray.surface.GroupTest#groupWhoseChildrenAllMissLeavesTheRecordUntouched",
+                        "your intersect returned true with t = 4; t = 4 is not inside the ray's segment (0, 3.5)"}}) {
+            String failure = failureOf(wrong, c[0]);
+            assertTrue(c[0] + " must give t and the segment: " + failure, failure.contains(c[1]));
+            assertTrue(c[0] + " must name the caller's segment: " + failure, failure.contains("a group searches the caller's segment"));
+        }
+    }
+
+    /** A group that returns whether its last child was hit reports a miss with the closest hit in the record: the message says so. */
+    @Test
+    public void aGroupThatReturnsTheLastChildsAnswerIsToldSo() throws Exception {
+        String failure = failureOf(Variant.wrong("group-last-hit", 4), "ray.surface.GroupTest#closestHitWinsInEveryOrderOfTheChildren");
+        assertTrue(failure, failure.contains("expected a hit at t = 4; your intersect returned false; it returned false, yet wrote a hit"
+                + " into the record (t = 4, surface near (hit at t = 4.0)): a group returns whether any child was hit; does yours return whether the"
+                + " last child it tried was?"));
+    }
+
+    /** A camera in float fails the hidden 1e-12 checks by some 1e-8: each failure names float precision. */
+    @Test
+    public void aFloatCameraIsToldOfFloatPrecision() throws Exception {
+        Variant wrong = Variant.wrong("camera-float-casts", 1);
+        List<VariantGrading.Outcome> failed = VariantGrading.run(wrong, (task, type) -> task == wrong.task, WORK.getRoot().toPath())
+                .stream().filter(o -> !o.passed()).collect(java.util.stream.Collectors.toList());
+        assertTrue(wrong + " must fail some test", !failed.isEmpty());
+        for (VariantGrading.Outcome o : failed) {
+            assertTrue(o.toString(), Pattern.compile("\\[off by some 1e-[6-9], about float precision").matcher(o.failure).find());
+        }
+    }
+
     /** The failure message of {@code test} when {@code variant} is graded on its task; the test must fail. */
     private static String failureOf(Variant variant, String test) throws Exception {
         List<VariantGrading.Outcome> outcomes = VariantGrading.run(variant, (task, type) -> task == variant.task, WORK.getRoot().toPath());

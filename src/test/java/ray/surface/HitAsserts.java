@@ -23,15 +23,17 @@ public final class HitAsserts {
 
     /** intersect must report a hit; the caller checks whatever it needs of it next. */
     public static void assertHit(String what, Surface surface, IntersectionRecord out, Ray ray) {
+        IntersectionRecord before = Records.copyOf(out);
         if (!surface.intersect(out, ray)) {
-            fail(line(what, "a hit", returnedFalse(), null));
+            fail(line(what, "a hit", returnedFalse(), HitHints.forHitLeftInTheRecord(surface, ray, before, out)));
         }
     }
 
     /** intersect must report a hit at t (within tolerance). */
     public static void assertHitAt(String what, Surface surface, IntersectionRecord out, Ray ray, double t, double tolerance) {
+        IntersectionRecord before = Records.copyOf(out);
         if (!surface.intersect(out, ray)) {
-            fail(line(what, hitAt(t), returnedFalse(), null));
+            fail(line(what, hitAt(t), returnedFalse(), HitHints.forHitLeftInTheRecord(surface, ray, before, out)));
         }
         assertT(what, surface, out, ray, t, tolerance);
     }
@@ -68,6 +70,20 @@ public final class HitAsserts {
         if (surface.intersect(out, ray)) {
             fail(line(what, "a miss", returnedTrue(out, surface instanceof TriangleShape), HitHints.forUnexpectedHit(surface, ray, out)));
         }
+    }
+
+    /**
+     * intersect must report a miss and leave the record exactly as it was; when it wrote into the
+     * record, the message says what it wrote and, when the numbers show it, why.
+     */
+    public static void assertMissUntouched(String what, Surface surface, IntersectionRecord out, Ray ray) {
+        IntersectionRecord before = Records.copyOf(out);
+        assertMiss(what, surface, out, ray);
+        String hint = HitHints.forHitLeftInTheRecord(surface, ray, before, out);
+        if (hint != null) {
+            fail(line(what, "a miss that leaves the record alone", returnedFalse(), hint));
+        }
+        Records.assertUntouched(before, out);
     }
 
     /** JUnit's rule for assertEquals on doubles: equal (NaN equals NaN), or within the tolerance. */

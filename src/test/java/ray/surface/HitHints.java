@@ -7,7 +7,8 @@ import ray.math.Vec3;
 /**
  * Names the likely cause of a wrong intersection only when the numbers identify it: the returned t
  * is the sphere's other root, or the expected t times |d| (the direction was normalized but t was
- * not scaled back), or a returned hit lies outside the ray's segment or outside the triangle. A
+ * not scaled back), or a returned hit lies outside the ray's segment or outside the triangle, or a
+ * "miss" left a hit in the record (a group returning whether its last child was hit). A
  * hint that merely guesses would send a student after a bug they do not have, so each returns
  * null unless the returned numbers match the cause. These run only after a check has failed; they
  * never decide a test.
@@ -21,6 +22,9 @@ public final class HitHints {
 
     /** Why a hit came back at {@code actual} instead of {@code expected}, or null when the numbers do not say. */
     public static String forWrongT(Surface surface, Ray ray, double expected, double actual) {
+        if (!(ray.start < actual && actual < ray.end)) {
+            return outsideTheSegment(surface, ray, actual);
+        }
         if (surface instanceof SphereShape) {
             String root = otherRoot((SphereShape) surface, ray, expected, actual);
             if (root != null) {
@@ -39,13 +43,39 @@ public final class HitHints {
     /** Why a hit that should have been a miss is not one, or null when the numbers do not say. */
     public static String forUnexpectedHit(Surface surface, Ray ray, IntersectionRecord out) {
         if (!(ray.start < out.t && out.t < ray.end)) {
-            return "t = " + HitMessages.number(out.t) + " is not inside the ray's segment (" + HitMessages.number(ray.start)
-                    + ", " + HitMessages.number(ray.end) + "), whose ends are both excluded";
+            return outsideTheSegment(surface, ray, out.t);
         }
         if (surface instanceof TriangleShape) {
             return outsideTheTriangle(out.beta, out.gamma);
         }
         return null;
+    }
+
+    /**
+     * Why intersect returned false although it wrote a hit into the record ({@code before}: the record
+     * as it was), or null when the record is as it was. A group that returns whether the last child
+     * it tried was hit does exactly this whenever an earlier child was the hit.
+     */
+    public static String forHitLeftInTheRecord(Surface surface, Ray ray, IntersectionRecord before, IntersectionRecord out) {
+        if (out.surface == before.surface && Double.compare(out.t, before.t) == 0) {
+            return null;
+        }
+        String wrote = "it returned false, yet wrote a hit into the record (t = " + HitMessages.number(out.t)
+                + (out.surface != null ? ", " + out.surface : "") + ")";
+        if (!(ray.start < out.t && out.t < ray.end)) {
+            return wrote + ", and " + outsideTheSegment(surface, ray, out.t);
+        }
+        return wrote + (surface instanceof Group
+                ? ": a group returns whether any child was hit; does yours return whether the last child it tried was?"
+                : ": intersect returns true exactly when it fills the record");
+    }
+
+    /** That t lies outside the ray's segment; for a group, that it must search the caller's segment. */
+    private static String outsideTheSegment(Surface surface, Ray ray, double t) {
+        String outside = "t = " + HitMessages.number(t) + " is not inside the ray's segment (" + HitMessages.number(ray.start)
+                + ", " + HitMessages.number(ray.end) + "), whose ends are both excluded";
+        return surface instanceof Group ? outside + ": a group searches the caller's segment, giving its children a copy of"
+                + " the caller's ray (the same ray.start and ray.end), shortened as hits are found, not a segment of its own" : outside;
     }
 
     /** Which barycentric bound (β ≥ 0, γ ≥ 0, β + γ ≤ 1) a point breaks, or null if it is inside. */
