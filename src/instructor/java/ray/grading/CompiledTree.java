@@ -29,19 +29,19 @@ import java.util.stream.Stream;
  * so that gradeAll notices when student code found the tree and wrote to it (it can, while the test
  * JVM runs as the grader's user), stops using it and grades again on a fresh one. Beside it, what
  * every grading would otherwise work out again for itself: each task's list of graded tests, and
- * the known mistakes' renders ({@link VariantMistakes.Renders}).
+ * what the known mistakes do ({@link MistakeEvidence}).
  */
 public final class CompiledTree {
     private final Path root;
     private final String fingerprint;
     private final Map<Integer, List<TestOutcome>> listed = new HashMap<>();
-    private final VariantMistakes.Renders mistakeRenders;
+    private final MistakeEvidence mistakeEvidence;
     private volatile boolean spoiled;
 
     private CompiledTree(Path root, String fingerprint, String classpath) {
         this.root = root;
         this.fingerprint = fingerprint;
-        this.mistakeRenders = new VariantMistakes.Renders(root, root.resolve("classes") + File.pathSeparator + classpath);
+        this.mistakeEvidence = new MistakeEvidence(root, root.resolve("classes") + File.pathSeparator + classpath);
     }
 
     /**
@@ -96,9 +96,9 @@ public final class CompiledTree {
         List<TestOutcome> list() throws IOException, InterruptedException;
     }
 
-    /** The known mistakes' renders, made in this tree (its variants, scenes and classes) once for every grading. */
-    VariantMistakes.Renders mistakeRenders() {
-        return mistakeRenders;
+    /** What the known mistakes do (renders, failed tests), measured in this tree (its variants, scenes and classes) once for every grading. */
+    MistakeEvidence mistakeEvidence() {
+        return mistakeEvidence;
     }
 
     /**

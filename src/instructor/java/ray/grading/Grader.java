@@ -60,6 +60,9 @@ public final class Grader implements Callable<Integer> {
     @Option(names = "--no-isolation", negatable = false, description = "Run student code as the grader's own user even as root.")
     boolean noIsolation;
 
+    @Option(names = "--task", description = "Grade only this task's tests (a regrade of one task, or the diagnosis evaluation).")
+    Integer onlyTask;
+
     // PrairieLearn shows every test it is given; Gradescope hides tests by their visibility itself.
     // The environment variable lets a PrairieLearn question's info.json choose, without another entrypoint.
     @Option(names = "--hidden-tests", defaultValue = "${env:RAY1_HIDDEN_TESTS:-summary}",
@@ -87,7 +90,7 @@ public final class Grader implements Callable<Integer> {
     private Path work;
     /** Where, and as whom, the test JVMs run (Sandbox); made with the work folder. */
     private Sandbox sandbox;
-    /** Known mistakes that make a failed render test's image, by test id (VariantMistakes). */
+    /** The known mistakes failed tests' results are, by test id (VariantMistakes). */
     private final Map<String, String> mistakeNames = new LinkedHashMap<>();
 
     /** System.nanoTime when the grade must stop (--time-limit). */
@@ -120,6 +123,9 @@ public final class Grader implements Callable<Integer> {
             // No path on the grading machine reaches the student: the render tests' report line names one.
             outcomes = outcomes.stream().map(t -> t.withMessage(RenderFeedback.withoutReportLine(t.message())))
                     .collect(java.util.stream.Collectors.toList());
+            // A unit test's known mistake goes in its message; a render test's on its page (RenderFeedback).
+            outcomes = outcomes.stream().map(t -> mistakeNames.containsKey(t.id()) && !t.className().startsWith("ray.endtoend.")
+                    ? t.withMessage(t.message() + "\n" + mistakeNames.get(t.id())) : t).collect(java.util.stream.Collectors.toList());
             // Taken now: the render tests' pictures are in the work folder, which goes below.
             pictures = RenderFeedback.of(outcomes, sandbox.tree(), mistakeNames);
         } catch (Exception | Error e) {
@@ -176,11 +182,15 @@ public final class Grader implements Callable<Integer> {
     }
 
     private List<TestOutcome> gradeInstructorTree() throws IOException, InterruptedException {
-        return timed(tests(instructorTree()).inSandbox(sandbox)).run(null);
+        return timed(tests(instructorTree()).inSandbox(sandbox)).run(onlyTask);
     }
 
     private List<TestOutcome> gradeSubmission(StringBuilder output) throws IOException, InterruptedException {
         Map<String, Integer> studentFiles = StudentFiles.in(project);
+        if (onlyTask != null && !studentFiles.containsValue(onlyTask)) {
+            throw new IllegalArgumentException("--task " + onlyTask + ": there is no such task; the tasks are "
+                    + new TreeSet<>(studentFiles.values()));
+        }
         Submission handedIn = Submission.locate(submission, studentFiles.keySet(), work.resolve("submission"));
         Map<String, Path> overlay = new LinkedHashMap<>(handedIn.files);
         describe(handedIn, output);
@@ -198,6 +208,9 @@ public final class Grader implements Callable<Integer> {
         Path instructor = instructorTree();
         List<TestOutcome> outcomes = new ArrayList<>();
         for (int task : new TreeSet<>(studentFiles.values())) {
+            if (onlyTask != null && task != onlyTask) {
+                continue;
+            }
             if (System.nanoTime() > deadline) {
                 outcomes.addAll(allFailed(task, pastDeadline()));
                 continue;
@@ -238,23 +251,22 @@ public final class Grader implements Callable<Integer> {
     }
 
     /**
-     * When some of the task's render tests failed, the known mistakes of the task that make the same
-     * images (kept for {@link RenderFeedback}); never a reason to fail grading.
+     * When some of the task's tests failed, the known mistakes of the task that the student's results
+     * are, measured (kept for {@link RenderFeedback} and the unit tests' messages); never a reason to
+     * fail grading.
      */
     private void nameMistakes(Path instructor, int task, List<TestOutcome> taskOutcomes, Map<String, Integer> studentFiles,
             String againstInstructor, Path mistakesWork) {
-        List<TestOutcome> failedRenders = taskOutcomes.stream()
-                .filter(t -> !t.passed() && t.className().startsWith("ray.endtoend.")).collect(java.util.stream.Collectors.toList());
-        if (failedRenders.isEmpty() || System.nanoTime() > deadline) {
+        if (taskOutcomes.stream().allMatch(TestOutcome::passed) || System.nanoTime() > deadline) {
             return;
         }
         try {
-            // The mistakes' renders depend on no submission: under gradeAll, each is made once for the
-            // class, from the compiled tree's variants (not this tree's copy).
-            VariantMistakes.Renders renders = sharedTree != null ? sharedTree.mistakeRenders() : new VariantMistakes.Renders();
+            // What a mistake does depends on no submission: under gradeAll, each is measured once for
+            // the class, from the compiled tree's variants (not this tree's copy).
+            MistakeEvidence evidence = sharedTree != null ? sharedTree.mistakeEvidence() : new MistakeEvidence();
             Path variants = sharedTree != null ? sharedTree.root() : instructor;
-            mistakeNames.putAll(VariantMistakes.named(instructor, sandbox.tree(), failedRenders,
-                    VariantMistakes.of(variants, task, studentFiles), againstInstructor, mistakesWork, renders));
+            mistakeNames.putAll(VariantMistakes.named(instructor, sandbox.tree(), taskOutcomes,
+                    VariantMistakes.of(variants, task, studentFiles), againstInstructor, mistakesWork, evidence));
         } catch (IOException | RuntimeException e) {
             // The feedback goes without a name; the grade is unchanged.
         } catch (InterruptedException e) {

@@ -1,37 +1,43 @@
 package ray.grading;
 
-import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
-import java.io.File;
 import java.io.IOException;
-import java.nio.file.Files;
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.TimeUnit;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import javax.imageio.ImageIO;
 import ray.grading.VariantFolders.Variant;
 import ray.image.ImageDiff;
 
 /**
- * Names a wrong render by the known mistake that makes the same image. The instructor's tree keeps
- * known-wrong versions of the student files (src/instructorTest/variants, each class saying
- * "Known wrong: what it does"); when a task's render tests fail, each known-wrong version of that
- * task renders the failing scenes with the solution for everything else, and a render that matches
- * the student's by the render tests' own comparison names the mistake ("Your render matches a known
- * mistake's, whose code takes the far root ..."), the closest one where several match. A correct
- * render matches the reference, and the known mistakes do not, so a correct submission never gets a
- * name.
+ * Names a known mistake only where the student's results are that mistake's, measured. The
+ * instructor's tree keeps known-wrong versions of the student files (src/instructorTest/variants,
+ * each class saying "Known wrong: what it does"); when a task's tests fail, its known mistakes are
+ * run in the student's place ({@link MistakeEvidence}) and a mistake is named
+ * <ul>
+ * <li>in a failed render test, when its render of the scene matches the student's by the render
+ *     tests' own comparison <em>and</em> it fails the same unit tests of the task as the student's
+ *     code (a render that merely looks like a mistake's is not enough: an inward normal and a sphere
+ *     that ignores the ray's segment both draw a dark sphere);</li>
+ * <li>in the failed unit tests, when they are exactly the tests one mistake fails, with the same
+ *     numbers.</li>
+ * </ul>
+ * Otherwise nothing is named: a wrong name sends a student to fix correct code. A correct submission
+ * fails nothing, so it never gets a name.
  */
 final class VariantMistakes {
     static final String MATCHES = "Your render matches a known mistake's, whose code ";
-    /** The renders of one scene by all of a task's known mistakes take seconds; this is the backstop. */
-    private static final int RENDER_LIMIT_SECONDS = 120;
+    static final String SAME_FAILURES = "Your code fails the same tests as a known mistake's, with the same numbers; its code ";
 
     private VariantMistakes() {
     }
@@ -48,132 +54,110 @@ final class VariantMistakes {
     }
 
     /**
-     * For each of {@code failed} (a task's failed render tests, whose renders the test wrote into the
-     * tree's render-diff report): the known mistake whose render matches the student's, by test id.
+     * The known mistakes the task's results are, by test id: for each failed render test whose
+     * image matches a mistake's and whose failed unit tests are that mistake's, {@link #MATCHES} and
+     * the mistake; and when the failed unit tests, with their numbers, are exactly one mistake's,
+     * {@link #SAME_FAILURES} and the mistake for each of them.
      *
-     * @param classpath the instructor's classes and the libraries, for compiling and rendering the mistakes
+     * @param testsRanIn   where the task's tests ran (the render tests wrote the student's images there)
+     * @param taskOutcomes every outcome of the task's tests
+     * @param classpath    the instructor's classes and the libraries, for compiling and running the mistakes
      */
-    static Map<String, String> named(Path tree, Path testsRanIn, List<TestOutcome> failed, List<Variant> mistakes, String classpath,
-            Path work) throws IOException, InterruptedException {
-        return named(tree, testsRanIn, failed, mistakes, classpath, work, new Renders());
-    }
-
-    /** The same, taking the mistakes' renders from {@code renders} and keeping the new ones there. */
-    static Map<String, String> named(Path tree, Path testsRanIn, List<TestOutcome> failed, List<Variant> mistakes, String classpath,
-            Path work, Renders renders) throws IOException, InterruptedException {
-        Map<String, Path> yours = new LinkedHashMap<>();
-        Map<String, String> sceneFiles = new LinkedHashMap<>();
-        for (TestOutcome t : failed) {
-            FailedRender render = FailedRender.of(t, testsRanIn);
-            if (render != null) {
-                yours.put(t.id(), render.yours);
-                sceneFiles.put(t.id(), render.sceneFile);
-            }
-        }
+    static Map<String, String> named(Path tree, Path testsRanIn, List<TestOutcome> taskOutcomes, List<Variant> mistakes,
+            String classpath, Path work, MistakeEvidence evidence) throws IOException, InterruptedException {
         Map<String, String> names = new LinkedHashMap<>();
-        if (yours.isEmpty()) {
-            return names;
-        }
-        // Several mistakes may each match within the render tests' tolerance (two texture lookups a
-        // texel apart in different ways both change a few edges); the closest render names it.
-        Map<String, Double> closest = new LinkedHashMap<>();
-        for (Variant mistake : mistakes) {
-            Path out = work.resolve(mistake.folder.getFileName().toString());
-            Map<String, byte[]> theirRenders = renders.of(tree, mistake,
-                    sceneFiles.values().stream().distinct().collect(Collectors.toList()), classpath, out);
-            for (Map.Entry<String, Path> entry : yours.entrySet()) {
-                byte[] theirs = theirRenders.get(sceneFiles.get(entry.getKey()));
-                if (theirs != null) {
-                    BufferedImage student = ImageIO.read(entry.getValue().toFile());
-                    ImageDiff.Result diff = ImageDiff.compare(ImageIO.read(new ByteArrayInputStream(theirs)), student);
-                    if (diff.passed() && diff.meanDifference() < closest.getOrDefault(entry.getKey(), Double.POSITIVE_INFINITY)) {
-                        closest.put(entry.getKey(), diff.meanDifference());
-                        names.put(entry.getKey(), MATCHES + mistake.knownWrong);
-                    }
+        Map<String, String> yourFailures = failedUnitTests(taskOutcomes);
+        names.putAll(byRenders(tree, testsRanIn, taskOutcomes, yourFailures.keySet(), mistakes, classpath, work, evidence));
+        if (!yourFailures.isEmpty()) {
+            List<Variant> same = new ArrayList<>();
+            for (Variant mistake : mistakes) {
+                if (failuresOf(tree, mistake, classpath, work, evidence).equals(Optional.of(yourFailures))) {
+                    same.add(mistake);
                 }
+            }
+            // Two mistakes that fail the same tests alike cannot be told apart by them: neither is named.
+            if (same.size() == 1) {
+                yourFailures.keySet().forEach(id -> names.put(id, SAME_FAILURES + same.get(0).knownWrong));
             }
         }
         return names;
     }
 
     /**
-     * Known mistakes' renders, by mistake and scene file, as PNG files' bytes in memory. A mistake
-     * renders a scene the same way whatever the submission, so gradeAll keeps one of these for the
-     * whole class ({@link CompiledTree}) and each mistake renders each scene once, not once for
-     * every submission with that scene wrong; and being in memory, no student code can touch them.
+     * Failed render tests whose image matches a mistake's by the render tests' own comparison and
+     * whose task fails the same unit tests as that mistake, named by it (the closest render where
+     * several do). The picture alone is not enough: two mistakes that both darken a sphere render
+     * alike, and a student with a third mistake may render like either.
      */
-    static final class Renders {
-        /** Mistake folder name → scene file → its render (empty: the mistake rendered no picture of it). */
-        private final Map<String, Map<String, Optional<byte[]>>> byMistake = new ConcurrentHashMap<>();
-        /** Where the mistakes render, and the classes they render with; null: the grading's own tree. */
-        private final Path home;
-        private final String homeClasspath;
-
-        /** Renders for one grading, made in its own tree. */
-        Renders() {
-            this(null, null);
-        }
-
-        /**
-         * Renders shared by gradings, made in {@code home} (a compiled instructor tree that no student
-         * code runs in) with {@code classpath} (its classes and the libraries), never in a grading's
-         * tree, whose files that grading's code could have changed.
-         */
-        Renders(Path home, String classpath) {
-            this.home = home;
-            this.homeClasspath = classpath;
-        }
-
-        /**
-         * {@code mistake}'s renders of {@code scenes} (scene file → PNG bytes; a scene it could not
-         * render is left out), rendering in {@code out} those not made yet. One mistake renders for
-         * one grading at a time: another grading that needs it waits, then finds the renders made.
-         */
-        Map<String, byte[]> of(Path tree, Variant mistake, List<String> scenes, String classpath, Path out)
-                throws IOException, InterruptedException {
-            Map<String, Optional<byte[]>> known = byMistake.computeIfAbsent(mistake.folder.getFileName().toString(),
-                    k -> new LinkedHashMap<>());
-            synchronized (known) {
-                List<String> missing = scenes.stream().filter(scene -> !known.containsKey(scene)).collect(Collectors.toList());
-                Path renders = missing.isEmpty() ? null
-                        : home != null ? render(home, mistake, missing, homeClasspath, out) : render(tree, mistake, missing, classpath, out);
-                // When the render failed (no compile, out of time), nothing is kept: the next grading tries again.
-                if (renders != null) {
-                    for (String scene : missing) {
-                        Path png = renders.resolve(Path.of(scene).getFileName().toString().replaceFirst("\\.xml$", "") + ".png");
-                        known.put(scene, Files.isRegularFile(png) ? Optional.of(Files.readAllBytes(png)) : Optional.empty());
-                    }
-                }
-                Map<String, byte[]> found = new LinkedHashMap<>();
-                for (String scene : scenes) {
-                    Optional<byte[]> png = known.getOrDefault(scene, Optional.empty());
-                    png.ifPresent(bytes -> found.put(scene, bytes));
-                }
-                return found;
+    private static Map<String, String> byRenders(Path tree, Path testsRanIn, List<TestOutcome> taskOutcomes, Set<String> yourFailedTests,
+            List<Variant> mistakes, String classpath, Path work, MistakeEvidence evidence) throws IOException, InterruptedException {
+        Map<String, Path> yours = new LinkedHashMap<>();
+        Map<String, String> sceneFiles = new LinkedHashMap<>();
+        for (TestOutcome t : taskOutcomes) {
+            FailedRender render = t.passed() ? null : FailedRender.of(t, testsRanIn);
+            if (render != null) {
+                yours.put(t.id(), render.yours);
+                sceneFiles.put(t.id(), render.sceneFile);
             }
         }
+        Map<String, String> names = new LinkedHashMap<>();
+        Map<String, Double> closest = new LinkedHashMap<>();
+        List<String> scenes = sceneFiles.values().stream().distinct().collect(Collectors.toList());
+        for (Variant mistake : yours.isEmpty() ? List.<Variant>of() : mistakes) {
+            Map<String, byte[]> theirRenders = evidence.renders(tree, mistake, scenes, classpath, workOf(work, mistake));
+            for (Map.Entry<String, Path> entry : yours.entrySet()) {
+                byte[] theirs = theirRenders.get(sceneFiles.get(entry.getKey()));
+                if (theirs == null) {
+                    continue;
+                }
+                ImageDiff.Result diff = ImageDiff.compare(ImageIO.read(new ByteArrayInputStream(theirs)), ImageIO.read(entry.getValue().toFile()));
+                if (diff.passed() && diff.meanDifference() < closest.getOrDefault(entry.getKey(), Double.POSITIVE_INFINITY)
+                        && failuresOf(tree, mistake, classpath, work, evidence)
+                                .map(theirFailures -> theirFailures.keySet().equals(yourFailedTests)).orElse(false)) {
+                    closest.put(entry.getKey(), diff.meanDifference());
+                    names.put(entry.getKey(), MATCHES + mistake.knownWrong);
+                }
+            }
+        }
+        return names;
     }
 
-    /** The scenes rendered with the mistake's files in place of the solution's, or null when that fails. */
-    private static Path render(Path tree, Variant mistake, List<String> scenes, String classpath, Path out)
-            throws IOException, InterruptedException {
-        Path classes = out.resolve("classes");
-        if (!ProjectCompiler.compile(mistake.folder, mistake.sources, classes, classpath).ok()) {
-            return null;
+    private static Optional<Map<String, String>> failuresOf(Path tree, Variant mistake, String classpath, Path work,
+            MistakeEvidence evidence) throws IOException, InterruptedException {
+        return evidence.failedUnitTests(tree, mistake, classpath, workOf(work, mistake));
+    }
+
+    private static Path workOf(Path work, Variant mistake) {
+        return work.resolve(mistake.folder.getFileName().toString());
+    }
+
+    /**
+     * The failed regular unit tests among {@code outcomes} (not the render tests, not bonus tests,
+     * which a correct solution may fail too), by id, each with its message's numbers to six
+     * significant digits: the same mistake written another way fails the same tests with the same
+     * numbers, give or take the last bits of a double.
+     */
+    static Map<String, String> failedUnitTests(List<TestOutcome> outcomes) {
+        Map<String, String> failed = new TreeMap<>();
+        for (TestOutcome t : outcomes) {
+            if (!t.passed() && !t.bonus() && !t.className().startsWith("ray.endtoend.")) {
+                failed.put(t.id(), withNumbersRounded(t.message()));
+            }
         }
-        Path renders = out.resolve("renders");
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx1g", "-Djava.awt.headless=true", "-cp", classes + File.pathSeparator + classpath,
-                "ray.cli.RayTracer", "render", "-o", renders.toString()));
-        // A few scenes' renders: a short-lived JVM, like the tests'.
-        command.addAll(1, TestProcess.SHORT_LIVED_JVM);
-        command.addAll(scenes);
-        Process process = new ProcessBuilder(command).directory(tree.toFile()).redirectErrorStream(true)
-                .redirectOutput(out.resolve("render.log").toFile()).start();
-        if (!process.waitFor(RENDER_LIMIT_SECONDS, TimeUnit.SECONDS)) {
-            process.destroyForcibly();
-            return null;
+        return failed;
+    }
+
+    private static final Pattern NUMBER = Pattern.compile("-?\\d+(\\.\\d+)?([eE][-+]?\\d+)?");
+    private static final Pattern OBJECT_ADDRESS = Pattern.compile("@[0-9a-f]{4,}");
+
+    static String withNumbersRounded(String message) {
+        Matcher m = NUMBER.matcher(OBJECT_ADDRESS.matcher(message).replaceAll("@"));
+        StringBuilder out = new StringBuilder();
+        while (m.find()) {
+            String rounded = new BigDecimal(m.group()).round(new MathContext(6)).stripTrailingZeros().toString();
+            m.appendReplacement(out, Matcher.quoteReplacement(rounded));
         }
-        return renders;
+        m.appendTail(out);
+        return out.toString();
     }
 }

@@ -22,7 +22,7 @@ import ray.grading.VariantFolders.Variant;
  * the tree it was given (never in the grading's own tree), and every later grading gets the same
  * picture without rendering again.
  */
-public class MistakeRendersTest {
+public class MistakeEvidenceTest {
     @Rule
     public final TemporaryFolder folder = new TemporaryFolder();
 
@@ -36,17 +36,17 @@ public class MistakeRendersTest {
         Map<String, Integer> studentFiles = StudentFiles.in(PROJECT);
         Variant farRoot = VariantFolders.in(PROJECT, studentFiles).stream()
                 .filter(v -> v.folder.getFileName().toString().equals("sphere-far-root")).findFirst().orElseThrow();
-        VariantMistakes.Renders renders = new VariantMistakes.Renders(PROJECT, CLASSPATH);
+        MistakeEvidence renders = new MistakeEvidence(PROJECT, CLASSPATH);
         // The grading's tree does not even exist: the mistake renders in the project it was given.
         Path gradingTree = folder.getRoot().toPath().resolve("no-such-tree");
         Path first = folder.getRoot().toPath().resolve("first");
-        Map<String, byte[]> once = renders.of(gradingTree, farRoot, List.of("scenes/one-sphere.xml"), "not used", first);
+        Map<String, byte[]> once = renders.renders(gradingTree, farRoot, List.of("scenes/one-sphere.xml"), "not used", first);
         assertEquals(List.of("scenes/one-sphere.xml"), List.copyOf(once.keySet()));
         assertTrue(Files.isRegularFile(first.resolve("renders/one-sphere.png")));
         assertArrayEquals(Files.readAllBytes(first.resolve("renders/one-sphere.png")), once.get("scenes/one-sphere.xml"));
 
         Path second = folder.getRoot().toPath().resolve("second");
-        Map<String, byte[]> again = renders.of(gradingTree, farRoot, List.of("scenes/one-sphere.xml"), "not used", second);
+        Map<String, byte[]> again = renders.renders(gradingTree, farRoot, List.of("scenes/one-sphere.xml"), "not used", second);
         assertFalse("rendered again", Files.exists(second));
         assertArrayEquals(once.get("scenes/one-sphere.xml"), again.get("scenes/one-sphere.xml"));
         assertFalse(Files.exists(gradingTree));

@@ -1,0 +1,158 @@
+package ray.grading;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
+import ray.grading.VariantFolders.Variant;
+
+/**
+ * What each known mistake does, measured by running it: its renders of scenes (PNG bytes) and the
+ * unit tests of its task it fails, with their messages. {@link VariantMistakes} compares a student's
+ * results with these before it names a mistake. A mistake does the same whatever the submission, so
+ * gradeAll keeps one of these for the whole class ({@link CompiledTree}) and each mistake renders a
+ * scene, and runs its tests, once; and being in memory, no student code can touch them.
+ */
+final class MistakeEvidence {
+    /** The renders of one scene by all of a task's known mistakes take seconds; this is the backstop. */
+    private static final int RENDER_LIMIT_SECONDS = 120;
+
+    /** Mistake folder name → scene file → its render (empty: the mistake rendered no picture of it). */
+    private final Map<String, Map<String, Optional<byte[]>>> renders = new ConcurrentHashMap<>();
+    /** Mistake folder name → its failed unit tests ({@link VariantMistakes#failedUnitTests}); empty: they could not run. */
+    private final Map<String, Optional<Map<String, String>>> failures = new ConcurrentHashMap<>();
+    /** Where the mistakes run, and the classes they run with; null: the grading's own tree. */
+    private final Path home;
+    private final String homeClasspath;
+
+    /** Evidence for one grading, made in its own tree. */
+    MistakeEvidence() {
+        this(null, null);
+    }
+
+    /**
+     * Evidence shared by gradings, made in {@code home} (a compiled instructor tree that no student
+     * code runs in) with {@code classpath} (its classes and the libraries), never in a grading's
+     * tree, whose files that grading's code could have changed.
+     */
+    MistakeEvidence(Path home, String classpath) {
+        this.home = home;
+        this.homeClasspath = classpath;
+    }
+
+    /**
+     * {@code mistake}'s renders of {@code scenes} (scene file → PNG bytes; a scene it could not render
+     * is left out), rendering in {@code out} those not made yet. One mistake renders for one grading at
+     * a time: another grading that needs it waits, then finds the renders made.
+     */
+    Map<String, byte[]> renders(Path tree, Variant mistake, List<String> scenes, String classpath, Path out)
+            throws IOException, InterruptedException {
+        Map<String, Optional<byte[]>> known = renders.computeIfAbsent(key(mistake), k -> new LinkedHashMap<>());
+        synchronized (known) {
+            List<String> missing = scenes.stream().filter(scene -> !known.containsKey(scene)).collect(Collectors.toList());
+            Path made = missing.isEmpty() ? null : render(runIn(tree), mistake, missing, classpathOr(classpath), out);
+            // When the render failed (no compile, out of time), nothing is kept: the next grading tries again.
+            if (made != null) {
+                for (String scene : missing) {
+                    Path png = made.resolve(Path.of(scene).getFileName().toString().replaceFirst("\\.xml$", "") + ".png");
+                    known.put(scene, Files.isRegularFile(png) ? Optional.of(Files.readAllBytes(png)) : Optional.empty());
+                }
+            }
+            Map<String, byte[]> found = new LinkedHashMap<>();
+            for (String scene : scenes) {
+                known.getOrDefault(scene, Optional.empty()).ifPresent(bytes -> found.put(scene, bytes));
+            }
+            return found;
+        }
+    }
+
+    /**
+     * The regular unit tests of {@code mistake}'s task that it fails (test id → message, as
+     * {@link VariantMistakes#failedUnitTests} keeps them), running them in {@code out} the first
+     * time; empty when they could not run (no compile, out of time).
+     */
+    Optional<Map<String, String>> failedUnitTests(Path tree, Variant mistake, String classpath, Path out)
+            throws IOException, InterruptedException {
+        Optional<Map<String, String>> known = failures.get(key(mistake));
+        if (known != null) {
+            return known;
+        }
+        synchronized (failures) {
+            known = failures.get(key(mistake));
+            if (known == null) {
+                Path classes = compiled(mistake, classpathOr(classpath), out);
+                Optional<Map<String, String>> ran = Optional.empty();
+                if (classes != null) {
+                    try {
+                        ran = Optional.of(VariantMistakes.failedUnitTests(new TestProcess(runIn(tree), classes, classpathOr(classpath),
+                                out.resolve("tests")).withoutRenderTests().run(mistake.task)));
+                    } catch (IllegalStateException e) {
+                        // The test JVM could not run them: no evidence, so no name from them.
+                    }
+                }
+                known = ran;
+                if (known.isPresent()) {
+                    failures.put(key(mistake), known);
+                }
+            }
+            return known;
+        }
+    }
+
+    private static String key(Variant mistake) {
+        return mistake.folder.getFileName().toString();
+    }
+
+    private Path runIn(Path tree) {
+        return home != null ? home : tree;
+    }
+
+    private String classpathOr(String classpath) {
+        return home != null ? homeClasspath : classpath;
+    }
+
+    /** The mistake's files compiled into {@code out}/classes (once), or null when they do not compile. */
+    private static synchronized Path compiled(Variant mistake, String classpath, Path out) throws IOException {
+        Path classes = out.resolve("classes");
+        Path done = out.resolve("compiled");
+        if (!Files.exists(done)) {
+            if (!ProjectCompiler.compile(mistake.folder, mistake.sources, classes, classpath).ok()) {
+                return null;
+            }
+            Files.writeString(done, "");
+        }
+        return classes;
+    }
+
+    /** The scenes rendered with the mistake's files in place of the solution's, or null when that fails. */
+    private static Path render(Path tree, Variant mistake, List<String> scenes, String classpath, Path out)
+            throws IOException, InterruptedException {
+        Path classes = compiled(mistake, classpath, out);
+        if (classes == null) {
+            return null;
+        }
+        Path renders = out.resolve("renders");
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx1g", "-Djava.awt.headless=true", "-cp", classes + File.pathSeparator + classpath,
+                "ray.cli.RayTracer", "render", "-o", renders.toString()));
+        // A few scenes' renders: a short-lived JVM, like the tests'.
+        command.addAll(1, TestProcess.SHORT_LIVED_JVM);
+        command.addAll(scenes);
+        Files.createDirectories(out);
+        Process process = new ProcessBuilder(command).directory(tree.toFile()).redirectErrorStream(true)
+                .redirectOutput(out.resolve("render.log").toFile()).start();
+        if (!process.waitFor(RENDER_LIMIT_SECONDS, TimeUnit.SECONDS)) {
+            process.destroyForcibly();
+            return null;
+        }
+        return renders;
+    }
+}
