@@ -24,11 +24,14 @@ public final class KnownMistakes {
         }
     }
 
+    /** How every piece of this advice begins. */
+    static final String ADVICE_START = "Your image matches the reference ";
+
     private static final List<Mistake> MISTAKES = List.of(
-            new Mistake(KnownMistakes::flippedVertically, "Your image matches the reference flipped upside down: the image point's"
+            new Mistake(KnownMistakes::flippedVertically, ADVICE_START + "flipped upside down: the image point's"
                     + " imageV is measured from the bottom of the image (imageV = 0 is the bottom row), and"
                     + " planeV = (imageV − ½)·viewHeight runs along the basis vector v, which points up (see TODO(Task 1), step 1)."),
-            new Mistake(KnownMistakes::flippedHorizontally, "Your image matches the reference mirrored left to right: imageU grows to"
+            new Mistake(KnownMistakes::flippedHorizontally, ADVICE_START + "mirrored left to right: imageU grows to"
                     + " the right, and the camera's u is normalize(viewUp × w), not w × viewUp (see TODO(Task 1), step 1)."));
 
     private KnownMistakes() {
