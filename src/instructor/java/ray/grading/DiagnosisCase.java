@@ -117,7 +117,8 @@ final class DiagnosisCase {
             boolean namedHere = false;
             for (Map.Entry<String, String> mistake : mistakeOf.entrySet()) {
                 boolean byRender = failed.output().contains(VariantMistakes.MATCHES + mistake.getValue());
-                boolean byTests = failed.output().contains(VariantMistakes.SAME_FAILURES + mistake.getValue());
+                boolean byTests = failed.output().contains(FailureSignatures.SAME_FAILURES + mistake.getValue())
+                        || failed.output().contains(FailureSignatures.ONE_OF_TWO + mistake.getValue());
                 if (byRender || byTests) {
                     named.add(mistake.getKey());
                     where.add(byRender ? "render" : "unit tests");

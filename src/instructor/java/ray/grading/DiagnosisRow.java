@@ -17,6 +17,12 @@ record DiagnosisRow(DiagnosisCase of, GradedFeedback feedback, Set<String> right
         return feedback.failed().size();
     }
 
+    /** "12", or "4 (4 bonus)" when some are bonus tests (which correct textbook code may fail). */
+    String failedShown() {
+        long bonus = feedback.failed().stream().filter(GradedFeedback.Failed::bonus).count();
+        return failedTests() + (bonus == 0 ? "" : " (" + bonus + " bonus)");
+    }
+
     /** The verdict: the goal is "named" for every known mistake and never a wrong name. */
     String verdict() {
         if (!wrong.isEmpty()) {
@@ -43,14 +49,18 @@ record DiagnosisRow(DiagnosisCase of, GradedFeedback feedback, Set<String> right
     }
 
     /** The rows as a Markdown table, with a count of each verdict under it. */
-    static String table(List<DiagnosisRow> rows) {
+    static String table(List<DiagnosisRow> unsorted) {
+        // By task, then name; the attempts, graded on every task, last.
+        List<DiagnosisRow> rows = new java.util.ArrayList<>(unsorted);
+        rows.sort(java.util.Comparator.comparing((DiagnosisRow r) -> r.of.task == null ? Integer.MAX_VALUE : r.of.task)
+                .thenComparing(r -> r.of.name));
         StringBuilder md = new StringBuilder("| Task | Submission | Failed tests | Differing renders named | Verdict | Named from | Names given |\n"
                 + "|---|---|---|---|---|---|---|\n");
         for (DiagnosisRow r : rows) {
             String names = String.join(", ", r.right) + (r.wrong.isEmpty() ? "" : (r.right.isEmpty() ? "" : "; ") + "wrongly: "
                     + String.join(", ", r.wrong));
             md.append("| ").append(r.of.task == null ? "all" : r.of.task).append(" | ").append(r.of.name)
-                    .append(r.of.kind == DiagnosisCase.Kind.CORRECT ? " (correct)" : "").append(" | ").append(r.failedTests())
+                    .append(r.of.kind == DiagnosisCase.Kind.CORRECT ? " (correct)" : "").append(" | ").append(r.failedShown())
                     .append(" | ").append(r.failedRenders == 0 ? "–" : r.rendersNamed + " of " + r.failedRenders)
                     .append(" | ").append(r.verdict()).append(" | ").append(String.join(", ", r.where))
                     .append(r.flippedPicture ? (r.where.isEmpty() ? "" : ", ") + "flipped picture" : "").append(" | ")

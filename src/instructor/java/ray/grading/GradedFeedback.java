@@ -15,8 +15,8 @@ import java.util.Map;
  * HTML pages turned back into text (Gradescope shows a render test's page as HTML).
  */
 record GradedFeedback(List<Failed> failed) {
-    /** One failed test: its name as results.json gives it, and its output as text. */
-    record Failed(String name, String output) {
+    /** One failed test: its name as results.json gives it, its output as text, and whether it is a bonus test. */
+    record Failed(String name, String output, boolean bonus) {
         /**
          * Whether it is a whole-scene render test (Gradescope names it "Task N (…): SphereRenderTest.rendersLikeTheReference[…]")
          * that rendered a picture unlike the reference (not one whose code threw before there was a picture).
@@ -37,7 +37,9 @@ record GradedFeedback(List<Failed> failed) {
         List<Failed> failed = new ArrayList<>();
         for (Map<String, Object> test : (List<Map<String, Object>>) results.getOrDefault("tests", List.of())) {
             if (!"passed".equals(test.get("status"))) {
-                failed.add(new Failed(String.valueOf(test.get("name")), text(String.valueOf(test.getOrDefault("output", "")))));
+                List<String> tags = (List<String>) test.getOrDefault("tags", List.of());
+                failed.add(new Failed(String.valueOf(test.get("name")), text(String.valueOf(test.getOrDefault("output", ""))),
+                        tags.contains("bonus")));
             }
         }
         return new GradedFeedback(failed);

@@ -27,7 +27,7 @@ final class MistakeEvidence {
 
     /** Mistake folder name → scene file → its render (empty: the mistake rendered no picture of it). */
     private final Map<String, Map<String, Optional<byte[]>>> renders = new ConcurrentHashMap<>();
-    /** Mistake folder name → its failed unit tests ({@link VariantMistakes#failedUnitTests}); empty: they could not run. */
+    /** Mistake folder name → its failed unit tests ({@link FailureSignatures#of}); empty: they could not run. */
     private final Map<String, Optional<Map<String, String>>> failures = new ConcurrentHashMap<>();
     /** Where the mistakes run, and the classes they run with; null: the grading's own tree. */
     private final Path home;
@@ -76,7 +76,7 @@ final class MistakeEvidence {
 
     /**
      * The regular unit tests of {@code mistake}'s task that it fails (test id → message, as
-     * {@link VariantMistakes#failedUnitTests} keeps them), running them in {@code out} the first
+     * {@link FailureSignatures#of} keeps them), running them in {@code out} the first
      * time; empty when they could not run (no compile, out of time).
      */
     Optional<Map<String, String>> failedUnitTests(Path tree, Variant mistake, String classpath, Path out)
@@ -92,7 +92,7 @@ final class MistakeEvidence {
                 Optional<Map<String, String>> ran = Optional.empty();
                 if (classes != null) {
                     try {
-                        ran = Optional.of(VariantMistakes.failedUnitTests(new TestProcess(runIn(tree), classes, classpathOr(classpath),
+                        ran = Optional.of(FailureSignatures.of(new TestProcess(runIn(tree), classes, classpathOr(classpath),
                                 out.resolve("tests")).withoutRenderTests().run(mistake.task)));
                     } catch (IllegalStateException e) {
                         // The test JVM could not run them: no evidence, so no name from them.

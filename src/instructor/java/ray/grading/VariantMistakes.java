@@ -2,8 +2,6 @@ package ray.grading;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
-import java.math.BigDecimal;
-import java.math.MathContext;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -11,9 +9,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.TreeMap;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import javax.imageio.ImageIO;
 import ray.grading.VariantFolders.Variant;
@@ -30,14 +25,13 @@ import ray.image.ImageDiff;
  *     code (a render that merely looks like a mistake's is not enough: an inward normal and a sphere
  *     that ignores the ray's segment both draw a dark sphere);</li>
  * <li>in the failed unit tests, when they are exactly the tests one mistake fails, with the same
- *     numbers.</li>
+ *     numbers, or exactly two mistakes' together ({@link FailureSignatures}).</li>
  * </ul>
  * Otherwise nothing is named: a wrong name sends a student to fix correct code. A correct submission
  * fails nothing, so it never gets a name.
  */
 final class VariantMistakes {
     static final String MATCHES = "Your render matches a known mistake's, whose code ";
-    static final String SAME_FAILURES = "Your code fails the same tests as a known mistake's, with the same numbers; its code ";
 
     private VariantMistakes() {
     }
@@ -56,8 +50,7 @@ final class VariantMistakes {
     /**
      * The known mistakes the task's results are, by test id: for each failed render test whose
      * image matches a mistake's and whose failed unit tests are that mistake's, {@link #MATCHES} and
-     * the mistake; and when the failed unit tests, with their numbers, are exactly one mistake's,
-     * {@link #SAME_FAILURES} and the mistake for each of them.
+     * the mistake; and for failed unit tests, the names {@link FailureSignatures} gives them.
      *
      * @param testsRanIn   where the task's tests ran (the render tests wrote the student's images there)
      * @param taskOutcomes every outcome of the task's tests
@@ -66,19 +59,14 @@ final class VariantMistakes {
     static Map<String, String> named(Path tree, Path testsRanIn, List<TestOutcome> taskOutcomes, List<Variant> mistakes,
             String classpath, Path work, MistakeEvidence evidence) throws IOException, InterruptedException {
         Map<String, String> names = new LinkedHashMap<>();
-        Map<String, String> yourFailures = failedUnitTests(taskOutcomes);
+        Map<String, String> yourFailures = FailureSignatures.of(taskOutcomes);
         names.putAll(byRenders(tree, testsRanIn, taskOutcomes, yourFailures.keySet(), mistakes, classpath, work, evidence));
         if (!yourFailures.isEmpty()) {
-            List<Variant> same = new ArrayList<>();
+            Map<String, Map<String, String>> theirs = new LinkedHashMap<>();
             for (Variant mistake : mistakes) {
-                if (failuresOf(tree, mistake, classpath, work, evidence).equals(Optional.of(yourFailures))) {
-                    same.add(mistake);
-                }
+                failuresOf(tree, mistake, classpath, work, evidence).ifPresent(signature -> theirs.put(mistake.knownWrong, signature));
             }
-            // Two mistakes that fail the same tests alike cannot be told apart by them: neither is named.
-            if (same.size() == 1) {
-                yourFailures.keySet().forEach(id -> names.put(id, SAME_FAILURES + same.get(0).knownWrong));
-            }
+            names.putAll(FailureSignatures.named(yourFailures, theirs));
         }
         return names;
     }
@@ -129,35 +117,5 @@ final class VariantMistakes {
 
     private static Path workOf(Path work, Variant mistake) {
         return work.resolve(mistake.folder.getFileName().toString());
-    }
-
-    /**
-     * The failed regular unit tests among {@code outcomes} (not the render tests, not bonus tests,
-     * which a correct solution may fail too), by id, each with its message's numbers to six
-     * significant digits: the same mistake written another way fails the same tests with the same
-     * numbers, give or take the last bits of a double.
-     */
-    static Map<String, String> failedUnitTests(List<TestOutcome> outcomes) {
-        Map<String, String> failed = new TreeMap<>();
-        for (TestOutcome t : outcomes) {
-            if (!t.passed() && !t.bonus() && !t.className().startsWith("ray.endtoend.")) {
-                failed.put(t.id(), withNumbersRounded(t.message()));
-            }
-        }
-        return failed;
-    }
-
-    private static final Pattern NUMBER = Pattern.compile("-?\\d+(\\.\\d+)?([eE][-+]?\\d+)?");
-    private static final Pattern OBJECT_ADDRESS = Pattern.compile("@[0-9a-f]{4,}");
-
-    static String withNumbersRounded(String message) {
-        Matcher m = NUMBER.matcher(OBJECT_ADDRESS.matcher(message).replaceAll("@"));
-        StringBuilder out = new StringBuilder();
-        while (m.find()) {
-            String rounded = new BigDecimal(m.group()).round(new MathContext(6)).stripTrailingZeros().toString();
-            m.appendReplacement(out, Matcher.quoteReplacement(rounded));
-        }
-        m.appendTail(out);
-        return out.toString();
     }
 }
