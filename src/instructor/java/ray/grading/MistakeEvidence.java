@@ -27,8 +27,10 @@ final class MistakeEvidence {
 
     /** Mistake folder name → scene file → its render (empty: the mistake rendered no picture of it). */
     private final Map<String, Map<String, Optional<byte[]>>> renders = new ConcurrentHashMap<>();
-    /** Mistake folder name → its failed unit tests ({@link FailureSignatures#of}); empty: they could not run. */
-    private final Map<String, Optional<Map<String, String>>> failures = new ConcurrentHashMap<>();
+    /** Mistake folder name → its failed unit tests ({@link FailureSignatures#of}), once they ran. */
+    private final Map<String, Map<String, String>> failures = new ConcurrentHashMap<>();
+    /** One lock per mistake: gradings (and one grading's threads) run different mistakes' tests at once. */
+    private final Map<String, Object> testLocks = new ConcurrentHashMap<>();
     /** Where the mistakes run, and the classes they run with; null: the grading's own tree. */
     private final Path home;
     private final String homeClasspath;
@@ -81,29 +83,24 @@ final class MistakeEvidence {
      */
     Optional<Map<String, String>> failedUnitTests(Path tree, Variant mistake, String classpath, Path out)
             throws IOException, InterruptedException {
-        Optional<Map<String, String>> known = failures.get(key(mistake));
-        if (known != null) {
-            return known;
-        }
-        synchronized (failures) {
-            known = failures.get(key(mistake));
-            if (known == null) {
-                Path classes = compiled(mistake, classpathOr(classpath), out);
-                Optional<Map<String, String>> ran = Optional.empty();
-                if (classes != null) {
-                    try {
-                        ran = Optional.of(FailureSignatures.of(new TestProcess(runIn(tree), classes, classpathOr(classpath),
-                                out.resolve("tests")).withoutRenderTests().run(mistake.task)));
-                    } catch (IllegalStateException e) {
-                        // The test JVM could not run them: no evidence, so no name from them.
-                    }
-                }
-                known = ran;
-                if (known.isPresent()) {
-                    failures.put(key(mistake), known);
+        synchronized (testLocks.computeIfAbsent(key(mistake), k -> new Object())) {
+            Map<String, String> known = failures.get(key(mistake));
+            if (known != null) {
+                return Optional.of(known);
+            }
+            Path classes = compiled(mistake, classpathOr(classpath), out);
+            Optional<Map<String, String>> ran = Optional.empty();
+            if (classes != null) {
+                try {
+                    ran = Optional.of(FailureSignatures.of(new TestProcess(runIn(tree), classes, classpathOr(classpath),
+                            out.resolve("tests")).withoutRenderTests().run(mistake.task)));
+                } catch (IllegalStateException e) {
+                    // The test JVM could not run them: no evidence, so no name from them.
                 }
             }
-            return known;
+            // When they could not run, nothing is kept: the next grading tries again.
+            ran.ifPresent(signature -> failures.put(key(mistake), signature));
+            return ran;
         }
     }
 

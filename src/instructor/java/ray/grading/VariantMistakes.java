@@ -9,6 +9,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.stream.Collectors;
 import javax.imageio.ImageIO;
 import ray.grading.VariantFolders.Variant;
@@ -58,17 +62,65 @@ final class VariantMistakes {
      */
     static Map<String, String> named(Path tree, Path testsRanIn, List<TestOutcome> taskOutcomes, List<Variant> mistakes,
             String classpath, Path work, MistakeEvidence evidence) throws IOException, InterruptedException {
-        Map<String, String> names = new LinkedHashMap<>();
         Map<String, String> yourFailures = FailureSignatures.of(taskOutcomes);
-        names.putAll(byRenders(tree, testsRanIn, taskOutcomes, yourFailures.keySet(), mistakes, classpath, work, evidence));
-        if (!yourFailures.isEmpty()) {
-            Map<String, Map<String, String>> theirs = new LinkedHashMap<>();
-            for (Variant mistake : mistakes) {
-                failuresOf(tree, mistake, classpath, work, evidence).ifPresent(signature -> theirs.put(mistake.knownWrong, signature));
+        Map<String, FailedRender> yourRenders = new LinkedHashMap<>();
+        for (TestOutcome t : taskOutcomes) {
+            FailedRender render = t.passed() ? null : FailedRender.of(t, testsRanIn);
+            if (render != null) {
+                yourRenders.put(t.id(), render);
             }
-            names.putAll(FailureSignatures.named(yourFailures, theirs));
         }
+        List<String> scenes = yourRenders.values().stream().map(r -> r.sceneFile).distinct().collect(Collectors.toList());
+        Map<String, Map<String, String>> theirFailures = signatures(tree, mistakes, classpath, work, evidence);
+        Map<String, String> names = new LinkedHashMap<>(byRenders(tree, yourRenders, scenes, yourFailures.keySet(), theirFailures,
+                mistakes, classpath, work, evidence));
+        names.putAll(FailureSignatures.named(yourFailures, theirFailures));
         return names;
+    }
+
+    /**
+     * Runs every mistake's unit tests of the task, a second or so each in a JVM of its own, side by
+     * side, one per core (kept in {@code evidence}), and returns each mistake's failure signature by
+     * its description (a mistake whose tests could not run is left out).
+     */
+    private static Map<String, Map<String, String>> signatures(Path tree, List<Variant> mistakes, String classpath, Path work,
+            MistakeEvidence evidence) throws InterruptedException {
+        List<Optional<Map<String, String>>> measured = inParallel(mistakes,
+                mistake -> evidence.failedUnitTests(tree, mistake, classpath, workOf(work, mistake)).orElse(null));
+        Map<String, Map<String, String>> theirs = new LinkedHashMap<>();
+        for (int i = 0; i < mistakes.size(); i++) {
+            String description = mistakes.get(i).knownWrong;
+            measured.get(i).ifPresent(signature -> theirs.put(description, signature));
+        }
+        return theirs;
+    }
+
+    /** What a mistake gives when it is run. */
+    private interface Run<T> {
+        T on(Variant mistake) throws Exception;
+    }
+
+    /** {@code run} on each mistake, one per core at once, in the mistakes' order; a run that fails gives empty. */
+    private static <T> List<Optional<T>> inParallel(List<Variant> mistakes, Run<T> run) throws InterruptedException {
+        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, Math.min(mistakes.size(), Runtime.getRuntime().availableProcessors())));
+        try {
+            List<Future<T>> running = new ArrayList<>();
+            for (Variant mistake : mistakes) {
+                running.add(pool.submit(() -> run.on(mistake)));
+            }
+            List<Optional<T>> results = new ArrayList<>();
+            for (Future<T> r : running) {
+                try {
+                    results.add(Optional.ofNullable(r.get()));
+                } catch (ExecutionException e) {
+                    // That mistake gives no evidence; the others still may.
+                    results.add(Optional.empty());
+                }
+            }
+            return results;
+        } finally {
+            pool.shutdownNow();
+        }
     }
 
     /**
@@ -77,42 +129,35 @@ final class VariantMistakes {
      * several do). The picture alone is not enough: two mistakes that both darken a sphere render
      * alike, and a student with a third mistake may render like either.
      */
-    private static Map<String, String> byRenders(Path tree, Path testsRanIn, List<TestOutcome> taskOutcomes, Set<String> yourFailedTests,
-            List<Variant> mistakes, String classpath, Path work, MistakeEvidence evidence) throws IOException, InterruptedException {
-        Map<String, Path> yours = new LinkedHashMap<>();
-        Map<String, String> sceneFiles = new LinkedHashMap<>();
-        for (TestOutcome t : taskOutcomes) {
-            FailedRender render = t.passed() ? null : FailedRender.of(t, testsRanIn);
-            if (render != null) {
-                yours.put(t.id(), render.yours);
-                sceneFiles.put(t.id(), render.sceneFile);
-            }
-        }
+    private static Map<String, String> byRenders(Path tree, Map<String, FailedRender> yours, List<String> scenes, Set<String> yourFailedTests,
+            Map<String, Map<String, String>> theirFailures, List<Variant> mistakes, String classpath, Path work, MistakeEvidence evidence)
+            throws IOException, InterruptedException {
         Map<String, String> names = new LinkedHashMap<>();
+        if (yours.isEmpty()) {
+            return names;
+        }
+        // Only a mistake that fails the same unit tests can be named; only those render (side by side).
+        List<Variant> candidates = mistakes.stream().filter(m -> theirFailures.containsKey(m.knownWrong)
+                && theirFailures.get(m.knownWrong).keySet().equals(yourFailedTests)).collect(Collectors.toList());
+        List<Optional<Map<String, byte[]>>> theirRenders = inParallel(candidates,
+                mistake -> evidence.renders(tree, mistake, scenes, classpath, workOf(work, mistake)));
         Map<String, Double> closest = new LinkedHashMap<>();
-        List<String> scenes = sceneFiles.values().stream().distinct().collect(Collectors.toList());
-        for (Variant mistake : yours.isEmpty() ? List.<Variant>of() : mistakes) {
-            Map<String, byte[]> theirRenders = evidence.renders(tree, mistake, scenes, classpath, workOf(work, mistake));
-            for (Map.Entry<String, Path> entry : yours.entrySet()) {
-                byte[] theirs = theirRenders.get(sceneFiles.get(entry.getKey()));
+        for (int i = 0; i < candidates.size(); i++) {
+            Map<String, byte[]> renders = theirRenders.get(i).orElse(Map.of());
+            for (Map.Entry<String, FailedRender> entry : yours.entrySet()) {
+                byte[] theirs = renders.get(entry.getValue().sceneFile);
                 if (theirs == null) {
                     continue;
                 }
-                ImageDiff.Result diff = ImageDiff.compare(ImageIO.read(new ByteArrayInputStream(theirs)), ImageIO.read(entry.getValue().toFile()));
-                if (diff.passed() && diff.meanDifference() < closest.getOrDefault(entry.getKey(), Double.POSITIVE_INFINITY)
-                        && failuresOf(tree, mistake, classpath, work, evidence)
-                                .map(theirFailures -> theirFailures.keySet().equals(yourFailedTests)).orElse(false)) {
+                ImageDiff.Result diff = ImageDiff.compare(ImageIO.read(new ByteArrayInputStream(theirs)),
+                        ImageIO.read(entry.getValue().yours.toFile()));
+                if (diff.passed() && diff.meanDifference() < closest.getOrDefault(entry.getKey(), Double.POSITIVE_INFINITY)) {
                     closest.put(entry.getKey(), diff.meanDifference());
-                    names.put(entry.getKey(), MATCHES + mistake.knownWrong);
+                    names.put(entry.getKey(), MATCHES + candidates.get(i).knownWrong);
                 }
             }
         }
         return names;
-    }
-
-    private static Optional<Map<String, String>> failuresOf(Path tree, Variant mistake, String classpath, Path work,
-            MistakeEvidence evidence) throws IOException, InterruptedException {
-        return evidence.failedUnitTests(tree, mistake, classpath, workOf(work, mistake));
     }
 
     private static Path workOf(Path work, Variant mistake) {
