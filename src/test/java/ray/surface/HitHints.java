@@ -22,14 +22,15 @@ public final class HitHints {
 
     /** Why a hit came back at {@code actual} instead of {@code expected}, or null when the numbers do not say. */
     public static String forWrongT(Surface surface, Ray ray, double expected, double actual) {
-        if (!(ray.start < actual && actual < ray.end)) {
-            return outsideTheSegment(surface, ray, actual);
-        }
+        // The sphere's other root is the more telling name, even outside the segment.
         if (surface instanceof SphereShape) {
             String root = otherRoot((SphereShape) surface, ray, expected, actual);
             if (root != null) {
                 return root;
             }
+        }
+        if (!(ray.start < actual && actual < ray.end)) {
+            return outsideTheSegment(surface, ray, actual);
         }
         double length = ray.direction.length();
         if (!same(length, 1) && same(actual, expected * length)) {
