@@ -3,13 +3,7 @@ package ray.camera;
 import ray.Ray;
 import ray.math.Vec3;
 
-public class PerspectiveCamera extends Camera {
-    private double projDistance = 1.0;
-
-    public void setProjDistance(double projDistance) {
-        this.projDistance = requirePositive("projDistance", projDistance);
-    }
-
+public class PerspectiveCamera extends PinholeCamera {
     @Override
     public Ray generateRay(double imageU, double imageV) {
         float s = (float) (imageU - 0.5) * (float) viewWidth;

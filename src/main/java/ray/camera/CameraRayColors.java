@@ -49,8 +49,8 @@ public final class CameraRayColors {
         if (!(along > 0)) {
             return UNUSABLE;
         }
-        boolean perspective = camera instanceof PerspectiveCamera;
-        double planeDistance = perspective ? ProjDistance.of((PerspectiveCamera) camera) : 0;
+        boolean perspective = camera instanceof PinholeCamera;
+        double planeDistance = perspective ? ((PinholeCamera) camera).getProjDistance() : 0;
         double t = (planeDistance - ray.origin.minus(camera.viewPoint).dot(forward)) / along;
         Vec3 onPlane = ray.pointAt(t).minus(camera.viewPoint);
         double red = onPlane.dot(camera.u) / camera.viewWidth + 0.5;

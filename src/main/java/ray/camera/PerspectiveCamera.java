@@ -3,13 +3,8 @@ package ray.camera;
 import ray.Ray;
 import ray.math.Vec3;
 
-/** A pinhole camera at viewPoint, with its image plane projDistance in front of it. */
-public class PerspectiveCamera extends Camera {
-    private double projDistance = 1.0;
-
-    public void setProjDistance(double projDistance) {
-        this.projDistance = requirePositive("projDistance", projDistance);
-    }
+/** A pinhole camera at viewPoint, with its image plane projDistance in front of it (both kept by PinholeCamera). */
+public class PerspectiveCamera extends PinholeCamera {
 
     @Override
     public Ray generateRay(double imageU, double imageV) {

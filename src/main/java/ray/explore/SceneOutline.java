@@ -9,8 +9,7 @@ import com.google.gson.JsonObject;
 import java.util.List;
 import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
-import ray.camera.PerspectiveCamera;
-import ray.camera.ProjDistance;
+import ray.camera.PinholeCamera;
 import ray.math.Affine;
 import ray.math.Bounds;
 import ray.math.Vec3;
@@ -68,7 +67,7 @@ final class SceneOutline {
 
     private static JsonObject camera(Camera camera) {
         JsonObject c = new JsonObject();
-        boolean perspective = camera instanceof PerspectiveCamera;
+        boolean perspective = camera instanceof PinholeCamera;
         c.addProperty("kind", perspective ? "perspective" : camera instanceof OrthographicCamera ? "orthographic" : "other");
         c.add("viewPoint", vec(camera.getViewPoint()));
         c.add("viewDir", vec(camera.getViewDir()));
@@ -78,7 +77,7 @@ final class SceneOutline {
         c.add("w", vec(camera.getW()));
         c.add("viewWidth", num(camera.getViewWidth()));
         c.add("viewHeight", num(camera.getViewHeight()));
-        c.add("projDistance", perspective ? num(ProjDistance.of((PerspectiveCamera) camera)) : JsonNull.INSTANCE);
+        c.add("projDistance", perspective ? num(((PinholeCamera) camera).getProjDistance()) : JsonNull.INSTANCE);
         return c;
     }
 

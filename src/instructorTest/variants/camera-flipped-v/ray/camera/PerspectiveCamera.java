@@ -4,13 +4,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Known wrong: t measured from the top (the image comes out upside down). */
-public class PerspectiveCamera extends Camera {
-    private double projDistance = 1.0;
-
-    public void setProjDistance(double projDistance) {
-        this.projDistance = requirePositive("projDistance", projDistance);
-    }
-
+public class PerspectiveCamera extends PinholeCamera {
     @Override
     public Ray generateRay(double imageU, double imageV) {
         double s = (imageU - 0.5) * viewWidth;

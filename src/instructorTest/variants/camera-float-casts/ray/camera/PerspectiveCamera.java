@@ -4,13 +4,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Known wrong: computes the image-plane coordinates in float, (float) ((imageU − 0.5)·viewWidth), so rays are off by float rounding, some 1e-8 of the view. */
-public class PerspectiveCamera extends Camera {
-    private double projDistance = 1.0;
-
-    public void setProjDistance(double projDistance) {
-        this.projDistance = requirePositive("projDistance", projDistance);
-    }
-
+public class PerspectiveCamera extends PinholeCamera {
     @Override
     public Ray generateRay(double imageU, double imageV) {
         double s = (float) ((imageU - 0.5) * viewWidth);

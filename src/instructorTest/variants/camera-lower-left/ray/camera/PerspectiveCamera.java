@@ -4,13 +4,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Ray Tracing in One Weekend's lower-left corner plus fractions of the horizontal and vertical spans. */
-public class PerspectiveCamera extends Camera {
-    private double projDistance = 1.0;
-
-    public void setProjDistance(double projDistance) {
-        this.projDistance = requirePositive("projDistance", projDistance);
-    }
-
+public class PerspectiveCamera extends PinholeCamera {
     @Override
     public Ray generateRay(double imageU, double imageV) {
         Vec3 horizontal = u.times(viewWidth);

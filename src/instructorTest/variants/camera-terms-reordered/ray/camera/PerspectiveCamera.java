@@ -4,13 +4,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** The lecture's formula with the terms summed in another order and the start and end written out. */
-public class PerspectiveCamera extends Camera {
-    private double projDistance = 1.0;
-
-    public void setProjDistance(double projDistance) {
-        this.projDistance = requirePositive("projDistance", projDistance);
-    }
-
+public class PerspectiveCamera extends PinholeCamera {
     @Override
     public Ray generateRay(double imageU, double imageV) {
         double s = viewWidth * imageU - viewWidth * 0.5;
