@@ -11,7 +11,6 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 import ray.accuracy.AccuracyStudy;
 import ray.accuracy.ReportWriter;
 import ray.accuracy.SceneStudy;
@@ -56,8 +55,8 @@ public final class AccuracyCommand implements Callable<Integer> {
     @CommandLine.Mixin
     Verbosity verbosity;
 
-    @Parameters(arity = "1..*", paramLabel = "SCENE.xml|DIR", description = "Scene files or folders of them.")
-    List<Path> scenes;
+    @CommandLine.Mixin
+    SceneArguments scenes;
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
@@ -72,9 +71,8 @@ public final class AccuracyCommand implements Callable<Integer> {
             err.println("error: " + outputProblem);
             return 1;
         }
-        List<Path> files = SceneArguments.expand(scenes);
-        if (files.isEmpty()) {
-            err.println("error: no scene files (*.xml) found in " + scenes);
+        List<Path> files = scenes.files(err);
+        if (files == null) {
             return 1;
         }
         AccuracyStudy study = new AccuracyStudy(samples, windowSize, part, referenceSamples, runs, threads == null ? 1 : threads,

@@ -12,7 +12,6 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 import ray.camera.CameraRayColors;
 import ray.image.PngWriter;
 import ray.render.RenderResult;
@@ -83,8 +82,8 @@ public final class RenderCommand implements Callable<Integer> {
     @CommandLine.Mixin
     Verbosity verbosity;
 
-    @Parameters(arity = "1..*", paramLabel = "SCENE.xml|DIR", description = "Scene files or folders of them.")
-    List<Path> scenes;
+    @CommandLine.Mixin
+    SceneArguments scenes;
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
@@ -105,9 +104,8 @@ public final class RenderCommand implements Callable<Integer> {
             err.println("error: " + outputProblem);
             return 1;
         }
-        List<Path> files = SceneArguments.expand(scenes);
-        if (files.isEmpty()) {
-            err.println("error: no scene files (*.xml) found in " + scenes);
+        List<Path> files = scenes.files(err);
+        if (files == null) {
             return 1;
         }
         List<SceneStats> stats = new ArrayList<>();

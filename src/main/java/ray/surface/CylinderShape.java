@@ -10,26 +10,8 @@ import ray.math.Vec3;
  * about {@code center} in the plane y = center.y, rising along +y by {@code height}. Any other
  * orientation is a {@code <rotate>} away, as for every surface.
  */
-public abstract class CylinderShape extends Surface {
-    protected Vec3 center = Vec3.ZERO;
-    protected double radius = 1.0;
+public abstract class CylinderShape extends RoundShape {
     protected double height = 1.0;
-
-    public Vec3 getCenter() {
-        return center;
-    }
-
-    public void setCenter(Vec3 center) {
-        this.center = center;
-    }
-
-    public double getRadius() {
-        return radius;
-    }
-
-    public void setRadius(double radius) {
-        this.radius = positive("radius", radius);
-    }
 
     public double getHeight() {
         return height;
@@ -37,20 +19,6 @@ public abstract class CylinderShape extends Surface {
 
     public void setHeight(double height) {
         this.height = positive("height", height);
-    }
-
-    private static double positive(String name, double value) {
-        if (!(value > 0) || Double.isInfinite(value)) {
-            throw new IllegalArgumentException(name + " is " + value + "; expected a positive number");
-        }
-        return value;
-    }
-
-    @Override
-    public Surface inFrameAt(Vec3 origin) {
-        CylinderShape moved = (CylinderShape) copy();
-        moved.center = center.minus(origin);
-        return moved;
     }
 
     /**

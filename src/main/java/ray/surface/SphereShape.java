@@ -8,29 +8,7 @@ import ray.math.Vec3;
  * A sphere's data and everything about it but the ray test, which the student's {@link Sphere}
  * adds: the points at distance {@code radius} from {@code center}.
  */
-public abstract class SphereShape extends Surface {
-    protected Vec3 center = Vec3.ZERO;
-    protected double radius = 1.0;
-
-    public Vec3 getCenter() {
-        return center;
-    }
-
-    public void setCenter(Vec3 center) {
-        this.center = center;
-    }
-
-    public double getRadius() {
-        return radius;
-    }
-
-    public void setRadius(double radius) {
-        if (!(radius > 0) || Double.isInfinite(radius)) {
-            throw new IllegalArgumentException("radius is " + radius + "; expected a positive number");
-        }
-        this.radius = radius;
-    }
-
+public abstract class SphereShape extends RoundShape {
     /**
      * The hit re-projected to center + radius·(unit direction to the hit), and the coordinates'
      * scale max|center| + radius. The reported normal is kept as the geometric normal, since shaders
@@ -58,13 +36,6 @@ public abstract class SphereShape extends Surface {
                 radial * Math.abs(outward.y) + rounding * Math.abs(point.y),
                 radial * Math.abs(outward.z) + rounding * Math.abs(point.z));
         return new HitGeometry(p, point, normal, center.maxAbs() + radius, error);
-    }
-
-    @Override
-    public Surface inFrameAt(Vec3 origin) {
-        SphereShape moved = (SphereShape) copy();
-        moved.center = center.minus(origin);
-        return moved;
     }
 
     /** The cube about the center with half-side |radius|. */

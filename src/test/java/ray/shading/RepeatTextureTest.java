@@ -2,6 +2,7 @@ package ray.shading;
 
 import static ray.shading.TextureLookups.assertLookup;
 import static ray.shading.TextureLookups.assertTexel;
+import static ray.shading.TextureLookups.nearEachTexelCenter;
 
 import org.junit.Rule;
 import org.junit.Test;
@@ -37,15 +38,7 @@ public class RepeatTextureTest {
     @Points(value = 2, task = StudentTask.TEXTURE)
     public void eachTexelIsReadNearItsCenter() {
         // Texel (column, row)'s center is at u = column/W, v = 1 − row/H; ±0.3 of a texel still reads it.
-        for (int column = 0; column < W; column++) {
-            for (int row = 0; row < H; row++) {
-                for (double du : new double[] {-0.3, 0, 0.3}) {
-                    for (double dv : new double[] {-0.3, 0, 0.3}) {
-                        check((column + du) / W, 1 - (row + dv) / H);
-                    }
-                }
-            }
-        }
+        nearEachTexelCenter(W, H, this::check);
     }
 
     @Test

@@ -73,6 +73,22 @@ final class TextureLookups {
      * Checks texture.getTexColor(u, v) on a distinctTexels(W, H) image: it must be texel (column, row)
      * for some column in {@code fixColumn(columns(u, W))} and row in {@code fixRow(rows(v, H))}.
      */
+    /**
+     * Calls {@code check(u, v)} at every texel's center (u = column/W, v = 1 − row/H) and ±0.3 of a
+     * texel around it in u and v, which still reads that texel.
+     */
+    static void nearEachTexelCenter(int width, int height, java.util.function.BiConsumer<Double, Double> check) {
+        for (int column = 0; column < width; column++) {
+            for (int row = 0; row < height; row++) {
+                for (double du : new double[] {-0.3, 0, 0.3}) {
+                    for (double dv : new double[] {-0.3, 0, 0.3}) {
+                        check.accept((column + du) / width, 1 - (row + dv) / height);
+                    }
+                }
+            }
+        }
+    }
+
     static void assertLookup(String rule, Texture texture, int width, int height, double u, double v,
             IntUnaryOperator fixColumn, IntUnaryOperator fixRow) {
         StringBuilder expected = new StringBuilder();
