@@ -30,7 +30,7 @@ import ray.scene.SceneLoader;
  * <li>the three {@link MeshScenes} with the BVH on 1 and 2 threads, and without it where that
  * takes seconds rather than minutes;</li>
  * <li>the same three scenes rendered by Mitsuba 3 ({@code scalar_rgb}, all cores) through
- * src/bench/mitsuba/render_mitsuba.py, when Python can import mitsuba (else the column says so).</li>
+ * src/instructorBench/mitsuba/render_mitsuba.py, when Python can import mitsuba (else the column says so).</li>
  * </ol>
  * Not JMH: each render takes from milliseconds to seconds, so a best-of-N after warm-up renders in
  * the same JVM is steady enough, and the whole run takes a few minutes.
@@ -118,7 +118,7 @@ public final class AccelerationBench {
     /** Mitsuba's best render time for the scene on every core, or null when Python cannot run it. */
     private static Double mitsuba(String python, Path scene) {
         try {
-            Process process = new ProcessBuilder(python, "src/bench/mitsuba/render_mitsuba.py", scene.toString(), "--repeat", "5")
+            Process process = new ProcessBuilder(python, "src/instructorBench/mitsuba/render_mitsuba.py", scene.toString(), "--repeat", "5")
                     .redirectError(ProcessBuilder.Redirect.DISCARD).start();
             String last = null;
             try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {

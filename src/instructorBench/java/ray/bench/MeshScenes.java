@@ -14,7 +14,7 @@ import ray.tools.Icosphere;
 
 /**
  * The scenes behind the acceleration figures of docs/performance.md, written as ray1 scene files
- * (and OBJ meshes) that {@code ray1 render} and the Mitsuba 3 script under src/bench/mitsuba read
+ * (and OBJ meshes) that {@code ray1 render} and the Mitsuba 3 script under src/instructorBench/mitsuba read
  * alike:
  * <ul>
  * <li>{@code blob-5k}: a lumpy closed mesh of 5,120 triangles on a ground at 450×450, one sample

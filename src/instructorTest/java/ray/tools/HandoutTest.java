@@ -57,6 +57,8 @@ public class HandoutTest {
         for (String file : files) {
             assertFalse(file, file.startsWith("src/instructor") || file.startsWith(".ci/") || file.startsWith("build/")
                     || file.equals("gradle/instructor.gradle") || file.equals("docs/instructor.md"));
+            // Students never run a benchmark (the JMH ones, the Mitsuba 3 comparison): none ships.
+            assertFalse("a benchmark ships in the handout: " + file, file.startsWith("src/") && file.toLowerCase().contains("bench"));
         }
     }
 
