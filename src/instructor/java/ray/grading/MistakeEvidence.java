@@ -139,7 +139,7 @@ final class MistakeEvidence {
         Path renders = out.resolve("renders");
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx1g", "-Djava.awt.headless=true", "-cp", classes + File.pathSeparator + classpath,
-                "ray.cli.RayTracer", "render", "-o", renders.toString()));
+                "ray.cli.Ray1", "render", "-o", renders.toString()));
         // A few scenes' renders: a short-lived JVM, like the tests'.
         command.addAll(1, TestProcess.SHORT_LIVED_JVM);
         command.addAll(scenes);

@@ -27,7 +27,7 @@ import ray.surface.Surface;
  * colors, no lights, one sample) rendered by the framework, against the bare loop a student could
  * write for it: one camera ray per pixel, the closest hit, its normal as the color. Both on one
  * thread. The ratio is what the framework's generality (the plan, the shader call, the counters,
- * the tracer) costs a scene that uses none of it; setup checks that both make the same image.
+ * the shading) costs a scene that uses none of it; setup checks that both make the same image.
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.AverageTime)

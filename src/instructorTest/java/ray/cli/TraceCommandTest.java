@@ -32,7 +32,7 @@ import ray.shading.RGBNormals;
 import ray.surface.Group;
 import ray.surface.Sphere;
 import ray.surface.Surface;
-import ray.trace.PixelTrace;
+import ray.inspect.PixelTrace;
 
 /**
  * {@code ray1 trace}: the numbers it prints for pixels whose every step follows by hand from the

@@ -22,7 +22,7 @@ import ray.scene.Scene;
 import ray.scene.SceneLoader;
 import ray.shading.Light;
 import ray.shading.Shader;
-import ray.shading.Tracer;
+import ray.shading.ShadingContext;
 import ray.surface.Group;
 import ray.surface.Sphere;
 import ray.surface.Surface;
@@ -56,7 +56,7 @@ final class Variants {
         return ray.grading.KnownMistakes.flippedVertically(image);
     }
 
-    /** Defect (c): shadows missing: every shader sees a tracer whose shadow test always says unoccluded. */
+    /** Defect (c): shadows missing: every shader sees a shading whose shadow test always says unoccluded. */
     static BufferedImage withoutShadows(Path file) {
         Scene scene = SceneLoader.load(file);
         forEachSurface(scene.getSurfaces(), s -> {
@@ -184,11 +184,11 @@ final class Variants {
         }
 
         @Override
-        public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
-            return shader.shade(hit, ray, new Tracer() {
+        public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext shading, int depth) {
+            return shader.shade(hit, ray, new ShadingContext() {
                 @Override
                 public List<Light> lights() {
-                    return tracer.lights();
+                    return shading.lights();
                 }
 
                 @Override
@@ -198,7 +198,7 @@ final class Variants {
 
                 @Override
                 public Vec3 radiance(IntersectionRecord h, Vec3 direction, int d) {
-                    return tracer.radiance(h, direction, d);
+                    return shading.radiance(h, direction, d);
                 }
             }, depth);
         }

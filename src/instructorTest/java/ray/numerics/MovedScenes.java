@@ -15,7 +15,7 @@ import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneLoader;
 import ray.shading.Light;
-import ray.shading.Tracer;
+import ray.shading.ShadingContext;
 import ray.surface.Group;
 import ray.surface.Placement;
 import ray.surface.Surface;
@@ -87,7 +87,7 @@ final class MovedScenes {
      * fixed-epsilon renderer). Only for scenes without reflections.
      */
     static java.awt.image.BufferedImage renderWithFixedEpsilon(Scene scene, double epsilon) {
-        Tracer tracer = new Tracer() {
+        ShadingContext shading = new ShadingContext() {
             @Override
             public java.util.List<Light> lights() {
                 return scene.getLights();
@@ -114,7 +114,7 @@ final class MovedScenes {
                 Ray ray = scene.getCamera().generateRay((i + 0.5) / width, (j + 0.5) / height);
                 IntersectionRecord hit = new IntersectionRecord();
                 image.set(i, j, scene.getSurfaces().intersect(hit, ray)
-                        ? hit.surface.getShader().shade(hit, ray, tracer, 0) : scene.getBackColor());
+                        ? hit.surface.getShader().shade(hit, ray, shading, 0) : scene.getBackColor());
             }
         }
         return PngWriter.toBufferedImage(image, scene.getExposure());

@@ -22,7 +22,7 @@ import ray.scene.Scene;
 import ray.scene.SceneLoader;
 import ray.shading.Lambertian;
 import ray.shading.Light;
-import ray.shading.Tracer;
+import ray.shading.ShadingContext;
 import ray.surface.Mesh;
 import ray.surface.Placements;
 import ray.surface.Sphere;
@@ -435,7 +435,7 @@ public final class NumericsFigures {
      */
     static BufferedImage picture(Scene scene, Surface root, Camera camera, int width, int height, Reintersection.Spawner spawner) {
         Placements placements = Placements.of(root);
-        Tracer tracer = new Tracer() {
+        ShadingContext shading = new ShadingContext() {
             @Override
             public List<Light> lights() {
                 return scene.getLights();
@@ -454,14 +454,14 @@ public final class NumericsFigures {
         Image image = new Image(width, height);
         for (int j = 0; j < height; j++) {
             for (int i = 0; i < width; i++) {
-                image.set(i, j, trace(scene, root, camera.generateRay((i + 0.5) / width, (j + 0.5) / height), 0, tracer));
+                image.set(i, j, trace(scene, root, camera.generateRay((i + 0.5) / width, (j + 0.5) / height), 0, shading));
             }
         }
         return PngWriter.toBufferedImage(image, scene.getExposure());
     }
 
-    private static Vec3 trace(Scene scene, Surface root, Ray ray, int depth, Tracer tracer) {
+    private static Vec3 trace(Scene scene, Surface root, Ray ray, int depth, ShadingContext shading) {
         IntersectionRecord hit = new IntersectionRecord();
-        return root.intersect(hit, ray) ? hit.surface.getShader().shade(hit, ray, tracer, depth) : scene.getBackColor();
+        return root.intersect(hit, ray) ? hit.surface.getShader().shade(hit, ray, shading, depth) : scene.getBackColor();
     }
 }

@@ -10,7 +10,7 @@ import ray.Ray;
 import ray.math.Vec3;
 import ray.scene.Scene;
 import ray.shading.Shader;
-import ray.shading.Tracer;
+import ray.shading.ShadingContext;
 import ray.surface.Surface;
 
 /** An exception thrown while rendering (by a shader or a surface) comes out of render() rather than hanging or vanishing. */
@@ -19,7 +19,7 @@ public class RenderFailureTest {
     /** Fails on hits in the upper half of the view (y > 0), so some rows succeed and some fail. */
     private static final class FailingShader extends Shader {
         @Override
-        public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
+        public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext shading, int depth) {
             if (hit.location.y > 0) {
                 throw new IllegalStateException("shader failed at " + hit.location);
             }

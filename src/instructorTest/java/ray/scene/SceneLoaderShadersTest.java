@@ -19,7 +19,7 @@ import ray.shading.Light;
 import ray.shading.Phong;
 import ray.shading.RGBNormals;
 import ray.shading.Shader;
-import ray.shading.Tracer;
+import ray.shading.ShadingContext;
 import ray.surface.Sphere;
 import ray.surface.Surface;
 
@@ -189,7 +189,7 @@ public class SceneLoaderShadersTest {
         hit.t = 1;
         hit.location = v(0, 0, 0);
         hit.normal = v(0, 0, 1);
-        Tracer tracer = new Tracer() {
+        ShadingContext shading = new ShadingContext() {
             @Override
             public List<Light> lights() {
                 return List.of(lights);
@@ -205,6 +205,6 @@ public class SceneLoaderShadersTest {
                 return Vec3.ZERO;
             }
         };
-        return shader.shade(hit, new Ray(v(0, 0, 1), v(0, 0, -1)), tracer, 0);
+        return shader.shade(hit, new Ray(v(0, 0, 1), v(0, 0, -1)), shading, 0);
     }
 }

@@ -104,7 +104,7 @@ final class GradleDenylist {
                 Pattern.compile("(^|[^\\w.]|\\w\\.)main\\s*=(?!=)"),
                 Where.ANYWHERE, "Upgrading from 7.x: JavaExec.main is deprecated (7.1) and removed in 8.0; "
                         + "use mainClass (6.4 on)",
-                "t.main = 'ray.cli.RayTracer'"));
+                "t.main = 'ray.cli.Ray1'"));
         list.add(new Entry("a single classes folder (classesDir, testClassesDir)",
                 Pattern.compile("\\b(classesDir|testClassesDir)\\b"),
                 Where.ANYWHERE, "Upgrading from 4.x: SourceSetOutput.classesDir and Test.testClassesDir are removed "

@@ -3,7 +3,7 @@ package ray.accel;
 /**
  * What the searches of one thread cost, counted where the work is done: ray–primitive intersection
  * tests (calls of a primitive's {@code intersect}) and bounding boxes tested (BVH nodes and the
- * boxes of placed groups), per kind of ray. The tracer says which kind of ray it is searching for
+ * boxes of placed groups), per kind of ray. SceneShading says which kind of ray it is searching for
  * before each search; the surfaces add their counts after it. Not shared between threads.
  */
 public final class SearchCounter {

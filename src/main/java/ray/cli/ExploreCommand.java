@@ -10,7 +10,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import ray.explore.Explorer;
+import ray.inspect.Explorer;
 import ray.scene.SceneException;
 
 /** {@code ray1 explore}: renders a scene and serves a page where a click on a pixel shows its ray's story. */

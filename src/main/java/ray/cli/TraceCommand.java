@@ -9,7 +9,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import ray.scene.Scene;
 import ray.scene.SceneException;
-import ray.trace.PixelTrace;
+import ray.inspect.PixelTrace;
 
 /** {@code ray1 trace}: explains how one pixel of a scene gets its color. */
 @Command(name = "trace", mixinStandardHelpOptions = true,

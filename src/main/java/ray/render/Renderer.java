@@ -104,18 +104,18 @@ public final class Renderer {
         Image image = new Image(width, height);
         PixelKinds kinds = recordKinds ? new PixelKinds(width, height) : null;
         AtomicInteger nextRow = new AtomicInteger();
-        List<CountingTracer> tracers = new ArrayList<>();
+        List<CountingShading> shadings = new ArrayList<>();
         List<Runnable> workers = new ArrayList<>();
         int workerCount = Math.min(threads, height);
         for (int k = 0; k < workerCount; k++) {
-            CountingTracer tracer = new CountingTracer(plan, recordKinds);
-            tracers.add(tracer);
+            CountingShading shading = new CountingShading(plan, recordKinds);
+            shadings.add(shading);
             workers.add(() -> {
                 // A pixel's samples' votes, per kind: one array per worker, only when recording.
                 int[] votes = recordKinds ? new int[SurfaceKind.count()] : null;
                 try {
                     for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
-                        renderRow(tracer, image, j, kinds, votes);
+                        renderRow(shading, image, j, kinds, votes);
                         rowsDone.incrementAndGet();
                     }
                 } catch (RuntimeException | Error e) {
@@ -152,7 +152,7 @@ public final class Renderer {
             throw failure instanceof RuntimeException ? (RuntimeException) failure : new IllegalStateException(failure);
         }
         RayStats total = new RayStats();
-        tracers.forEach(t -> total.add(t.stats()));
+        shadings.forEach(t -> total.add(t.stats()));
         int n = plan.gridSide();
         return new RenderResult(image, kinds, plan, total, n * n, workerCount, (System.nanoTime() - startNanos) / 1e9);
     }
@@ -161,7 +161,7 @@ public final class Renderer {
      * Row {@code row} of the window, counted from its bottom, into the image of the window, and when
      * {@code kinds} is not null into it too, each pixel by the kind most of its samples hit.
      */
-    private void renderRow(CountingTracer tracer, Image image, int row, PixelKinds kinds, int[] votes) {
+    private void renderRow(CountingShading shading, Image image, int row, PixelKinds kinds, int[] votes) {
         Camera camera = scene.getCamera();
         int width = scene.getWidth();
         int height = scene.getHeight();
@@ -177,9 +177,9 @@ public final class Renderer {
                 for (int c = 0; c < n; c++) {
                     double u = (i + pattern.x(i, j, a, c, n)) / width;
                     double v = (j + pattern.y(i, j, a, c, n)) / height;
-                    Vec3 radiance = tracer.cameraRadiance(camera.generateRay(u, v));
+                    Vec3 radiance = shading.cameraRadiance(camera.generateRay(u, v));
                     if (votes != null) {
-                        votes[tracer.cameraKind().ordinal()]++;
+                        votes[shading.cameraKind().ordinal()]++;
                     }
                     r += radiance.x;
                     g += radiance.y;

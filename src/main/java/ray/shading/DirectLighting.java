@@ -55,19 +55,19 @@ public abstract class DirectLighting extends Shader {
     }
 
     @Override
-    public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
-        if (tracer.lights().isEmpty()) {
+    public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
+        if (context.lights().isEmpty()) {
             return Vec3.ZERO; // no light, no texture lookup (the sum below would be zero)
         }
         Vec3 toEye = towardEye(ray);
         Vec3 kd = diffuseColorAt(hit);
         double r = 0, g = 0, b = 0;
-        for (Light light : tracer.lights()) {
+        for (Light light : context.lights()) {
             Vec3 toLightVector = light.getPosition().minus(hit.location);
             double distanceSquared = toLightVector.lengthSquared();
             Vec3 f = reflectance(kd, hit.normal, toLightVector.normalized(), toEye);
             // A light whose unshadowed contribution is zero costs no shadow ray.
-            if (f.x == 0 && f.y == 0 && f.z == 0 || !tracer.unoccluded(hit, light.getPosition())) {
+            if (f.x == 0 && f.y == 0 && f.z == 0 || !context.unoccluded(hit, light.getPosition())) {
                 continue;
             }
             Vec3 intensity = light.getIntensity();

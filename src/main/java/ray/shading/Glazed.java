@@ -57,17 +57,17 @@ public class Glazed extends Shader {
     }
 
     @Override
-    public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
+    public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
         Vec3 toEye = towardEye(ray);
         double cosTheta = hit.normal.dot(toEye);
         double r = reflectance(cosTheta);
-        Vec3 base = substrate.shade(hit, ray, tracer, depth).times(1 - r);
+        Vec3 base = substrate.shade(hit, ray, context, depth).times(1 - r);
         // At the depth cap the glaze reflects black; a zero reflectance needs no ray.
         if (depth + 1 > MAX_DEPTH || r == 0) {
             return base;
         }
         // Mirror direction: the eye direction reflected about the normal, 2(n·e)n − e.
         Vec3 mirror = hit.normal.times(2 * cosTheta).minus(toEye);
-        return base.plus(tracer.radiance(hit, mirror, depth + 1).times(r));
+        return base.plus(context.radiance(hit, mirror, depth + 1).times(r));
     }
 }

@@ -7,7 +7,7 @@ import ray.math.Vec3;
 /** Shows the normal as a color, (n + 1)/2 per channel: a debugging view that needs no lights. */
 public class RGBNormals extends Shader {
     @Override
-    public Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth) {
+    public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
         return hit.normal.plus(Vec3.ONE).times(0.5);
     }
 }

@@ -15,7 +15,7 @@ public abstract class Shader {
      * @param depth the ray's recursion depth, 0 for camera rays
      * @return linear RGB radiance toward the ray's origin
      */
-    public abstract Vec3 shade(IntersectionRecord hit, Ray ray, Tracer tracer, int depth);
+    public abstract Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth);
 
     /** The effects this shader itself calls for (a glaze: reflection; Phong: lighting, shadows, specular). */
     public Set<Effect> effects() {

@@ -26,7 +26,7 @@ final class InMemoryClasses extends ClassLoader {
 
     /** Class bytes by binary name, until {@link #defineAll}; emptied then. */
     private final Map<String, byte[]> pending = new LinkedHashMap<>();
-    /** Files that are not classes, by resource name ("ray/explore/page.html"). */
+    /** Files that are not classes, by resource name ("ray/inspect/page.html"). */
     private final Map<String, byte[]> resources = new LinkedHashMap<>();
 
     InMemoryClasses(ClassLoader parent) {

@@ -1,0 +1,18 @@
+package ray.inspect;
+
+/** An exception in one line, with the place in the project's code that threw it. */
+public final class Failure {
+    private Failure() {
+    }
+
+    /** "NullPointerException: … (at Sphere.java:57)": the first frame in package ray is the code to look at. */
+    public static String oneLine(Throwable e) {
+        String message = e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
+        for (StackTraceElement frame : e.getStackTrace()) {
+            if (frame.getClassName().startsWith("ray.")) {
+                return message + " (at " + frame.getFileName() + ":" + frame.getLineNumber() + ")";
+            }
+        }
+        return message;
+    }
+}

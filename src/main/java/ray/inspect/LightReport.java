@@ -1,0 +1,53 @@
+package ray.inspect;
+
+import java.io.PrintWriter;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+import ray.scene.Scene;
+import ray.shading.Light;
+import ray.shading.Shader;
+
+/** Prints one light's part of a direct-lighting shader's result at a hit ({@link LightFacts}) with the numbers of each term. */
+final class LightReport {
+    private final Scene scene;
+    private final SurfaceNames names;
+    private final RecordedShading recorded;
+    private final PrintWriter out;
+
+    LightReport(Scene scene, SurfaceNames names, RecordedShading recorded, PrintWriter out) {
+        this.scene = scene;
+        this.names = names;
+        this.recorded = recorded;
+        this.out = out;
+    }
+
+    /** Prints the light's part and returns what the shader adds for it. */
+    Vec3 explain(int number, Light light, Shader shader, IntersectionRecord hit, Ray ray, String indent) {
+        LightFacts f = LightFacts.of(scene, recorded, light, shader, hit, ray);
+        Vec3 intensity = light.getIntensity();
+        out.println(indent + "Light " + number + " at " + Fmt.vec(light.getPosition()) + ", intensity I = " + Fmt.vec(intensity));
+        String in = indent + "  ";
+        out.println(Fmt.row(in, "l", Fmt.vec(f.l) + "   (unit vector from the hit to the light)"));
+        out.println(Fmt.row(in, "r", Fmt.num(Math.sqrt(f.r2)) + "   (r² = " + Fmt.num(f.r2) + ")"));
+        out.println(Fmt.row(in, "n·l", Fmt.num(f.nl) + (f.nl <= 0 ? "   (≤ 0: the light is behind the surface)" : "")));
+        if (f.shadow == null) {
+            out.println(Fmt.row(in, "shadow", "no shadow ray: this light adds nothing here anyway"));
+        } else {
+            f.shadow.print(names, in, out);
+        }
+        if (f.diffuse != null) {
+            out.println(Fmt.row(in, "diffuse", "kd ⊙ I · max(0, n·l) / r² = " + Fmt.vec(f.kd) + " ⊙ " + Fmt.vec(intensity)
+                    + " · " + Fmt.num(Math.max(0, f.nl)) + " / " + Fmt.num(f.r2) + " = " + Fmt.vec(f.diffuse)));
+        }
+        if (f.specular != null) {
+            out.println(Fmt.row(in, "h", Fmt.vec(f.h) + "   (normalize(l + e), the half vector)"));
+            out.println(Fmt.row(in, "n·h", Fmt.num(f.nh)));
+            out.println(Fmt.row(in, "specular", "ks ⊙ I · max(0, n·h)^p / r² = " + Fmt.vec(f.ks) + " ⊙ " + Fmt.vec(intensity)
+                    + " · " + Fmt.num(Math.max(0, f.nh)) + "^" + Fmt.num(f.exponent) + " / " + Fmt.num(f.r2) + " = "
+                    + Fmt.vec(f.specular) + "   (not gated by n·l)"));
+        }
+        out.println(Fmt.row(in, "adds", f.blocked() ? "nothing: the shadow ray is blocked" : Fmt.vec(f.adds)));
+        return f.adds;
+    }
+}

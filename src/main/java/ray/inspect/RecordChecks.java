@@ -1,0 +1,88 @@
+package ray.inspect;
+
+import java.util.ArrayList;
+import java.util.List;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Vec3;
+import ray.surface.SphereShape;
+
+/**
+ * What a hit record claims, checked against the intersect contract: its t lies inside the ray's
+ * segment (start, end), its normal has unit length, and a sphere seen from outside is hit where the
+ * ray enters it. A surface that ignores ray.start reports
+ * hits behind a shadow ray's start (a point shadowed by what lies behind it); one that assumes a
+ * unit direction reports normals of any length, which the shading then takes as unit ones.
+ */
+final class RecordChecks {
+    /** How far from 1 a normal's length may be: rounding of a normalize() is some 1e-16. */
+    static final double UNIT_TOLERANCE = 1e-6;
+
+    private RecordChecks() {
+    }
+
+    /** Every check of a camera ray's closest hit that fails, in the order the trace prints them. */
+    static List<String> of(IntersectionRecord hit, Ray ray) {
+        List<String> flags = new ArrayList<>();
+        for (String flag : new String[] {outsideSegment(hit.t, ray, "camera ray"), notUnit(hit.normal), farRoot(hit, ray)}) {
+            if (flag != null) {
+                flags.add(flag);
+            }
+        }
+        return flags;
+    }
+
+    /**
+     * Why t cannot be a hit on {@code ray} (named {@code rayName}, "shadow ray"), or null when it
+     * lies in the segment: "t = −9.5 lies behind the shadow ray's start (0): …".
+     */
+    static String outsideSegment(double t, Ray ray, String rayName) {
+        if (Double.isNaN(t)) {
+            return "t is NaN: a hit must lie in the ray's segment (start, end)";
+        }
+        if (t <= ray.start) {
+            return "t = " + Fmt.num(t) + " lies behind the " + rayName + "'s start (" + Fmt.num(ray.start)
+                    + "): a hit must lie in (start, end); does that intersect check ray.start?";
+        }
+        if (t >= ray.end) {
+            return "t = " + Fmt.num(t) + " lies beyond the " + rayName + "'s end (" + Fmt.num(ray.end)
+                    + "): a hit must lie in (start, end); does that intersect check ray.end?";
+        }
+        return null;
+    }
+
+    /**
+     * Why a sphere's hit looks like the far root, or null: the ray starts outside the sphere, yet the
+     * normal faces along the ray (n·d > 0), as it does where the ray leaves the sphere. Only for a hit
+     * that lies on the sphere as given (not moved by a transform), so that the eye's place can be
+     * compared with the center.
+     */
+    static String farRoot(IntersectionRecord hit, Ray ray) {
+        if (!(hit.surface instanceof SphereShape) || hit.normal == null || hit.location == null) {
+            return null;
+        }
+        SphereShape sphere = (SphereShape) hit.surface;
+        Vec3 center = sphere.getCenter();
+        double radius = sphere.getRadius();
+        boolean onTheSphere = Math.abs(hit.location.minus(center).length() - radius) <= 1e-6 * (radius + center.length());
+        boolean outside = ray.origin.minus(center).length() > radius;
+        if (!onTheSphere || !outside || !(hit.normal.dot(ray.direction) > 0)) {
+            return null;
+        }
+        return "the ray starts outside the sphere, yet this normal faces away from the eye (n·d > 0), as it does where"
+                + " the ray leaves the sphere: is this the far root? The hit is the smaller root inside (start, end)";
+    }
+
+    /** Why {@code normal} is no unit normal, or null when its length is 1: "not unit length: |n| = 2.4691; …". */
+    static String notUnit(Vec3 normal) {
+        if (normal == null) {
+            return null;
+        }
+        double length = normal.length();
+        if (Math.abs(length - 1) <= UNIT_TOLERANCE) {
+            return null;
+        }
+        return "the normal is not unit length: |n| = " + Fmt.num(length) + "; the shading takes it as a unit vector,"
+                + " so n·l and the highlight come out scaled: normalize it";
+    }
+}
