@@ -53,6 +53,17 @@ public class SandboxTest {
                 .filter(p -> user == null || p.info().user().map(user::equals).orElse(false)).count();
     }
 
+    /** The sleepers of {@code user}, counted again for up to 10 s until there are {@code expected}. */
+    private static long sleepersOnceStarted(String user, long expected) throws InterruptedException {
+        long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(10);
+        long count = sleepers(user);
+        while (count != expected && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+            count = sleepers(user);
+        }
+        return count;
+    }
+
     @Test(timeout = 120_000)
     public void isolatedTheJvmRunsAsTheStudentUserAndSeesNoSecret() throws Exception {
         assumeTrue("isolation needs root and the user " + Sandbox.USER, Sandbox.isRoot() && Sandbox.lookUp(Sandbox.USER).isPresent());
@@ -89,7 +100,8 @@ public class SandboxTest {
                     "sleep", "300");
             theirs.environment(builder.environment());
             Process other = builder.start();
-            assertEquals(1, sleepers(Sandbox.USER));
+            // setpriv becomes `sleep 300` only once it has set the user and exec'd: wait for that.
+            assertEquals(1, sleepersOnceStarted(Sandbox.USER, 1));
             mine.endStrayProcesses();
             assertTrue("another grader's process is spared", other.isAlive());
             theirs.endStrayProcesses();

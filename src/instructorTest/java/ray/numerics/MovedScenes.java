@@ -60,7 +60,7 @@ final class MovedScenes {
         moved.setViewUp((Vec3) field(Camera.class, camera, "viewUp"));
         moved.setViewWidth(scale * (Double) field(Camera.class, camera, "viewWidth"));
         moved.setViewHeight(scale * (Double) field(Camera.class, camera, "viewHeight"));
-        moved.setProjDistance(scale * (Double) field(PerspectiveCamera.class, camera, "projDistance"));
+        moved.setProjDistance(scale * camera.getProjDistance());
         moved.complete();
         return moved;
     }
