@@ -341,6 +341,37 @@ public class TraceCommandTest {
                 + " is Group.intersect still the stub? See TODO(Task 4)"));
     }
 
+    /**
+     * A plane z = 0, a surface type the framework has never heard of: it describes itself, and
+     * the trace names it so, with no edit in the inspection code.
+     */
+    private static final class ZPlane extends Surface {
+        @Override
+        public boolean intersect(IntersectionRecord out, Ray ray) {
+            double t = -ray.origin.z / ray.direction.z;
+            if (!(ray.start < t && t < ray.end)) {
+                return false;
+            }
+            out.t = t;
+            out.location = ray.pointAt(t);
+            out.normal = v(0, 0, 1);
+            out.surface = this;
+            return true;
+        }
+
+        @Override
+        public String describe(java.util.function.DoubleFunction<String> number) {
+            return "ZPlane at height " + number.apply(0);
+        }
+    }
+
+    @Test
+    public void aNewSurfaceTypeIsNamedAsItDescribesItself() {
+        String out = traceOneRayScene(new ZPlane());
+        assertTrue(out, out.contains("#1 ZPlane at height 0  hit  t = 5  at (0, 0, 0)  ← nearest"));
+        assertTrue(out, out.contains("surface      #1 ZPlane at height 0"));
+    }
+
     /** A 1×1 orthographic view from z = 5 straight down −z, onto {@code surface}, traced with the API. */
     private static String traceOneRayScene(Surface surface) {
         OrthographicCamera camera = new OrthographicCamera();

@@ -16,7 +16,7 @@ import ray.render.PixelKinds;
 import ray.render.RenderResult;
 import ray.render.Renderer;
 import ray.render.SphereAndTriangle;
-import ray.render.SurfaceKind;
+import ray.surface.SurfaceKind;
 import ray.scene.Scene;
 
 /**

@@ -17,6 +17,7 @@ import ray.scene.Scene;
 import ray.scene.SceneLoader;
 import ray.shading.Lambertian;
 import ray.surface.Sphere;
+import ray.surface.SurfaceKind;
 import ray.testing.StudentTask;
 
 /**

@@ -163,7 +163,7 @@ final class ExploreSession {
             s.add("reference", JsonNull.INSTANCE);
         } else {
             JsonObject r = new JsonObject();
-            r.addProperty("file", ray.inspect.SurfaceNames.shortPath(referenceFile));
+            r.addProperty("file", ray.ShortPaths.of(referenceFile));
             r.addProperty("summary", difference == null ? "no render to compare" : difference.summary());
             r.addProperty("passed", difference != null && difference.passed());
             r.addProperty("sameSize", difference != null && difference.sameSize());

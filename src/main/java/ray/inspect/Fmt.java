@@ -31,6 +31,11 @@ final class Fmt {
                 : String.format(Locale.ROOT, "%.5e", x).replaceFirst("\\.?0+e", "e");
     }
 
+    /** "12 triangles", "1 surface". */
+    static String count(int n, String noun) {
+        return n + " " + noun + (n == 1 ? "" : "s");
+    }
+
     static String vec(Vec3 v) {
         return v == null ? "null" : "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
     }

@@ -164,7 +164,7 @@ public final class PixelStory {
         }
         List<ProbeNode> primitives = node.primitives();
         long hits = primitives.stream().filter(ProbeNode::isHit).count();
-        return SurfaceNames.count(node.children.size(), "surface") + ", " + SurfaceNames.count(primitives.size(), "primitive")
+        return Fmt.count(node.children.size(), "surface") + ", " + Fmt.count(primitives.size(), "primitive")
                 + ": " + hits + " hit" + (primitives.contains(nearest) ? "  ← nearest inside" : "");
     }
 

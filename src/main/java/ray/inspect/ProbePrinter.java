@@ -4,8 +4,7 @@ import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import ray.surface.Box;
-import ray.surface.Mesh;
+import ray.surface.Surface;
 
 /**
  * Prints a {@link ProbeTree} as an indented list, one line per surface: groups with their
@@ -77,7 +76,8 @@ final class ProbePrinter {
         if (all || node.children.isEmpty() || !node.children.stream().allMatch(ProbeNode::isPrimitive)) {
             return false;
         }
-        return node.surface instanceof Mesh || node.surface instanceof Box || node.children.size() > SUMMARIZE_OVER;
+        // A mesh's or a box's triangles (parts the surface names itself) are summarized, as are many primitives.
+        return node.surface.partName(null, 0) != null || node.children.size() > SUMMARIZE_OVER;
     }
 
     private String result(ProbeNode p) {
@@ -106,9 +106,9 @@ final class ProbePrinter {
             }
         }
         int n = group.children.size();
-        StringBuilder s = new StringBuilder(SurfaceNames.count(n, "triangle")).append(": ").append(hits).append(" hit");
+        StringBuilder s = new StringBuilder(Fmt.count(n, "triangle")).append(": ").append(hits).append(" hit");
         if (best != null) {
-            s.append(" (nearest t = ").append(Fmt.num(best.t())).append(" at ").append(SurfaceNames.triangle(group.surface, best.surface, best.index))
+            s.append(" (nearest t = ").append(Fmt.num(best.t())).append(" at ").append(partName(group.surface, best))
                     .append(", at ").append(Fmt.vec(best.worldLocation())).append(best == nearest ? "  ← nearest" : "")
                     .append(")");
         }
@@ -141,5 +141,11 @@ final class ProbePrinter {
         if (lines.size() > shown) {
             rows.add(new String[] {indent + "! … and " + (lines.size() - shown) + " more like these (--all lists every triangle)", ""});
         }
+    }
+
+    /** "triangle #8 (+y face)" as the summarized surface names its part, else "#8". */
+    private static String partName(Surface whole, ProbeNode part) {
+        String name = whole.partName(part.surface, part.index);
+        return name != null ? name : "#" + (part.index + 1);
     }
 }

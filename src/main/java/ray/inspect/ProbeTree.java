@@ -4,8 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import ray.Ray;
 import ray.math.Affine;
-import ray.surface.Box;
-import ray.surface.Mesh;
 import ray.surface.Surface;
 import ray.surface.Transformed;
 
@@ -60,8 +58,8 @@ final class ProbeTree {
      * ({@code parent} is null at the top of the scene).
      */
     static String step(Surface parent, ProbeNode node, SurfaceNames names) {
-        boolean inShape = parent instanceof Mesh || parent instanceof Box;
-        return inShape ? SurfaceNames.triangle(parent, node.surface, node.index) : "#" + (node.index + 1) + " " + names.of(node.surface);
+        String part = parent == null ? null : parent.partName(node.surface, node.index);
+        return part != null ? part : "#" + (node.index + 1) + " " + names.of(node.surface);
     }
 
     private static boolean find(List<ProbeNode> nodes, ProbeNode target, List<ProbeNode> chain) {

@@ -5,7 +5,7 @@ import ray.IntersectionRecord;
 import ray.image.Image;
 import ray.math.Vec3;
 import ray.shading.Texture;
-import ray.surface.Sphere;
+import ray.surface.SurfaceKind;
 
 /**
  * The texture lookup at a hit of a textured shader: the hit's (u, v), the texel the course's
@@ -30,7 +30,7 @@ final class TextureReport {
         out.println(Fmt.row(in, "texture", texture + ", whose color at (u, v) replaces kd"));
         out.println(Fmt.row(in, "(u, v)", "(" + Fmt.num(hit.texU) + ", " + Fmt.num(hit.texV) + ")   (the hit's texture coordinates"
                 + (hit.surface == null ? "" : ", set by " + hit.surface.getClass().getSimpleName() + ".intersect") + ")"));
-        if (hit.texU == 0 && hit.texV == 0 && hit.surface instanceof Sphere) {
+        if (hit.texU == 0 && hit.texV == 0 && SurfaceKind.of(hit.surface) == SurfaceKind.SPHERE) {
             out.println(Fmt.row(in, "!", "(0, 0) is the sphere's south pole: does Sphere.intersect set texU and texV? See TODO(Task 2)"));
         }
         double columnAt = (double) u * w + 0.5; // in double, as getTexColor(double, double) computes it

@@ -10,6 +10,7 @@ import ray.accel.SearchTree;
 import ray.math.Vec3;
 import ray.shading.Effect;
 import ray.shading.Shader;
+import ray.surface.SurfaceKind;
 
 /**
  * The renderer's shading context for one thread: {@link SceneShading}'s rules, counting the work as it goes

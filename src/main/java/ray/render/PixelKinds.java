@@ -1,5 +1,7 @@
 package ray.render;
 
+import ray.surface.SurfaceKind;
+
 /**
  * What each pixel of a render shows: the {@link SurfaceKind} of the closest hit its camera rays
  * found, as the render's own intersection code (the student's spheres, triangles, groups) reported

@@ -11,6 +11,7 @@ import ray.camera.Camera;
 import ray.image.Image;
 import ray.math.Vec3;
 import ray.scene.Scene;
+import ray.surface.SurfaceKind;
 
 /**
  * The pixel loop. Pixel (i, j), j from the bottom, is sampled on an n×n grid, n = round(√N) for N

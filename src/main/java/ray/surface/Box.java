@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.DoubleFunction;
 import ray.math.Vec3;
 
 /**
@@ -171,5 +172,22 @@ public class Box extends TriangleSet implements WarnsOnLoad {
     @Override
     public String toString() {
         return "Box[" + minPt + " to " + maxPt + "]";
+    }
+
+    @Override
+    public String describe(DoubleFunction<String> number) {
+        return "Box " + vec(getMinPt(), number) + " to " + vec(getMaxPt(), number);
+    }
+
+    /** "triangle #8 (+y face)": a box's triangle with the face it belongs to. */
+    @Override
+    public String partName(Surface part, int index) {
+        String name = super.partName(part, index);
+        Vec3 n = part instanceof TriangleShape ? ((TriangleShape) part).getFaceNormal() : null;
+        if (n == null) {
+            return name;
+        }
+        int axis = Math.abs(n.x) >= Math.abs(n.y) && Math.abs(n.x) >= Math.abs(n.z) ? 0 : Math.abs(n.y) >= Math.abs(n.z) ? 1 : 2;
+        return name + " (" + (n.get(axis) > 0 ? "+" : "−") + "xyz".charAt(axis) + " face)";
     }
 }

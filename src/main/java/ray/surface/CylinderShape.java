@@ -66,4 +66,9 @@ public abstract class CylinderShape extends RoundShape {
     public String toString() {
         return "Cylinder[center " + center + ", radius " + radius + ", height " + height + "]";
     }
+
+    @Override
+    public SurfaceKind kind() {
+        return SurfaceKind.CYLINDER;
+    }
 }

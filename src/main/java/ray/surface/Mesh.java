@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.DoubleFunction;
 import ray.math.Vec3;
 
 /**
@@ -76,5 +77,11 @@ public class Mesh extends TriangleSet {
             v[i] = new Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
         }
         return v;
+    }
+
+    @Override
+    public String describe(DoubleFunction<String> number) {
+        java.nio.file.Path file = getData() == null ? null : getData().source;
+        return "Mesh " + (file != null ? ray.ShortPaths.of(file) + " " : "") + "(" + count(children().size(), "triangle") + ")";
     }
 }

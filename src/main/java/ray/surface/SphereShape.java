@@ -1,5 +1,6 @@
 package ray.surface;
 
+import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
 import ray.math.Bounds;
 import ray.math.Vec3;
@@ -47,5 +48,15 @@ public abstract class SphereShape extends RoundShape {
     @Override
     public String toString() {
         return "Sphere[center " + center + ", radius " + radius + "]";
+    }
+
+    @Override
+    public SurfaceKind kind() {
+        return SurfaceKind.SPHERE;
+    }
+
+    @Override
+    public String describe(DoubleFunction<String> number) {
+        return "Sphere center " + vec(center, number) + ", radius " + number.apply(radius);
     }
 }

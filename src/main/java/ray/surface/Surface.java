@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.List;
 import java.util.Set;
+import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Affine;
@@ -134,8 +135,54 @@ public abstract class Surface implements Cloneable {
         }
     }
 
+    /**
+     * A short name with the numbers that tell this surface apart, as {@code ray1 trace} and the
+     * explore page show it, each number written by {@code number}: "Sphere center (0, 0, 0), radius
+     * 1", "Group (3 surfaces)". A surface with parts names their count; any other its toString.
+     */
+    public String describe(DoubleFunction<String> number) {
+        int parts = children().size();
+        return parts == 0 ? toString() : namedClass() + " (" + count(parts, "surface") + ")";
+    }
+
+    /**
+     * How {@code ray1 trace} names this surface's part {@code part}, number {@code index} from 0, in
+     * a path ("triangle #8" in a mesh), or null when its parts are named by their own description
+     * (a group's surfaces).
+     */
+    public String partName(Surface part, int index) {
+        return null;
+    }
+
+    /** "(x, y, z)", each coordinate written by {@code number}. */
+    protected static String vec(Vec3 p, DoubleFunction<String> number) {
+        return p == null ? "null" : "(" + number.apply(p.x) + ", " + number.apply(p.y) + ", " + number.apply(p.z) + ")";
+    }
+
+    /** "12 triangles", "1 surface". */
+    protected static String count(int n, String noun) {
+        return n + " " + noun + (n == 1 ? "" : "s");
+    }
+
+    /**
+     * The kind of primitive this is, for naming what a pixel shows and whose task found it: the
+     * framework's shapes say theirs; any other surface is {@link SurfaceKind#OTHER}.
+     */
+    public SurfaceKind kind() {
+        return SurfaceKind.OTHER;
+    }
+
+    /** The simple name of this surface's class, or of the named class an anonymous one extends ("Group"). */
+    private String namedClass() {
+        Class<?> named = getClass();
+        while (named.isAnonymousClass()) {
+            named = named.getSuperclass();
+        }
+        return named.getSimpleName();
+    }
+
     @Override
     public String toString() {
-        return getClass().getSimpleName();
+        return namedClass();
     }
 }

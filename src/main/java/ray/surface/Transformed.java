@@ -2,6 +2,7 @@ package ray.surface;
 
 import java.util.List;
 import java.util.Set;
+import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.accel.SearchCounter;
@@ -131,5 +132,11 @@ public final class Transformed extends Surface {
     @Override
     public String toString() {
         return "Transformed[" + toWorld + "]";
+    }
+
+    /** A placement is named as it prints: what it places and how. */
+    @Override
+    public String describe(DoubleFunction<String> number) {
+        return toString();
     }
 }

@@ -116,4 +116,10 @@ public abstract class TriangleSet extends Surface {
     public String toString() {
         return getClass().getSimpleName() + "[" + triangles.length + " triangles]";
     }
+
+    /** A triangle of the set, by its number: "triangle #8". */
+    @Override
+    public String partName(Surface part, int index) {
+        return "triangle #" + (index + 1);
+    }
 }

@@ -1,6 +1,7 @@
 package ray.surface;
 
 import java.util.Set;
+import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
 import ray.math.Bounds;
 import ray.math.Vec3;
@@ -199,5 +200,15 @@ public abstract class TriangleShape extends Surface {
     @Override
     public String toString() {
         return "Triangle[" + v0 + ", " + v1 + ", " + v2 + "]";
+    }
+
+    @Override
+    public SurfaceKind kind() {
+        return SurfaceKind.TRIANGLE;
+    }
+
+    @Override
+    public String describe(DoubleFunction<String> number) {
+        return "Triangle " + vec(v0, number) + ", " + vec(v1, number) + ", " + vec(v2, number);
     }
 }

@@ -5,7 +5,7 @@ import java.util.Set;
 import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
-import ray.render.SurfaceKind;
+import ray.surface.SurfaceKind;
 import ray.render.TaskProbes;
 import ray.render.TaskProbes.Part;
 import ray.scene.Scene;

@@ -7,7 +7,7 @@ import java.util.List;
 import java.util.Map;
 import ray.image.ImageDiff;
 import ray.render.PixelKinds;
-import ray.render.SurfaceKind;
+import ray.surface.SurfaceKind;
 
 /**
  * A failed render's differing pixels in words, for the render test's message: what they show in

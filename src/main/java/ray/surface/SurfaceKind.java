@@ -1,17 +1,13 @@
-package ray.render;
-
-import ray.surface.CylinderShape;
-import ray.surface.SphereShape;
-import ray.surface.Surface;
-import ray.surface.TriangleShape;
+package ray.surface;
 
 /**
- * What a camera ray's closest hit is, by the kind of primitive that reported it: the kinds a
- * {@link PixelKinds} record tells apart, each with the student task whose code found it. A mesh's or
- * a box's triangles are triangles, and a primitive inside a transformed group is that primitive
- * (a hit's {@code surface} is always the primitive itself). The classes are matched by the shapes
- * the framework gives each task ({@link SphereShape}, {@link TriangleShape}, {@link CylinderShape}),
- * so a student's class, or any variant of it, is recognized whatever class loader made it.
+ * What a camera ray's closest hit is, by the kind of primitive that reported it: the kinds the
+ * renderer's pixel-kind record tells apart, each with the student task whose code found it. A mesh's
+ * or a box's triangles are triangles, and a primitive inside a transformed group is that primitive
+ * (a hit's {@code surface} is always the primitive itself). Each primitive says its kind
+ * ({@link Surface#kind()}): the shapes the framework gives each task ({@link SphereShape},
+ * {@link TriangleShape}, {@link CylinderShape}) say theirs, so a student's class, or any variant of
+ * it, is recognized whatever class loader made it.
  *
  * <p>The declaration order is the order of preference where counts tie: a surface before the
  * background.
@@ -41,16 +37,7 @@ public enum SurfaceKind {
 
     /** The kind of the primitive a hit record names ({@link #OTHER} for null). */
     public static SurfaceKind of(Surface primitive) {
-        if (primitive instanceof TriangleShape) {
-            return TRIANGLE;
-        }
-        if (primitive instanceof SphereShape) {
-            return SPHERE;
-        }
-        if (primitive instanceof CylinderShape) {
-            return CYLINDER;
-        }
-        return OTHER;
+        return primitive == null ? OTHER : primitive.kind();
     }
 
     /**
@@ -62,7 +49,7 @@ public enum SurfaceKind {
     }
 
     /** The kind with the most votes ({@code votes} indexed by ordinal), the first declared on a tie; clears the votes. */
-    static SurfaceKind mostVoted(int[] votes) {
+    public static SurfaceKind mostVoted(int[] votes) {
         int best = 0;
         for (int k = 1; k < votes.length; k++) {
             if (votes[k] > votes[best]) {
@@ -73,11 +60,11 @@ public enum SurfaceKind {
         return ALL[best];
     }
 
-    static SurfaceKind ofOrdinal(int ordinal) {
+    public static SurfaceKind ofOrdinal(int ordinal) {
         return ALL[ordinal];
     }
 
-    static int count() {
+    public static int count() {
         return ALL.length;
     }
 }
