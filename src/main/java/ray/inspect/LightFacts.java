@@ -62,10 +62,10 @@ final class LightFacts {
         Vec3 intensity = light.getIntensity();
         Vec3 unshadowed = shader.shade(hit, ray, recorded.onlyLight(light, true), 0);
         ShadowCheck shadow = isZero(unshadowed) ? null : ShadowCheck.of(scene, recorded, hit, light.getPosition());
-        Vec3 kd = ShaderParameters.diffuseColorAt(shader, hit);
+        Vec3 kd = shader.diffuseColorAt(hit);
         Vec3 diffuse = kd == null ? null : kd.times(intensity).times(Math.max(0, nl) / r2);
-        Vec3 ks = ShaderParameters.specularColor(shader);
-        Double p = ShaderParameters.exponent(shader);
+        Vec3 ks = shader.getSpecularColor();
+        Double p = shader.getExponent();
         Vec3 h = null;
         Double nh = null;
         Vec3 specular = null;

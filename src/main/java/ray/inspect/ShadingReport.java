@@ -9,7 +9,6 @@ import ray.scene.Scene;
 import ray.shading.DirectLighting;
 import ray.shading.Glazed;
 import ray.shading.Light;
-import ray.shading.Phong;
 import ray.shading.RGBNormals;
 import ray.shading.Shader;
 import ray.shading.Texture;
@@ -38,16 +37,16 @@ final class ShadingReport {
             return "none";
         }
         StringBuilder s = new StringBuilder(shader.getClass().getSimpleName());
-        Vec3 kd = ShaderParameters.diffuseColor(shader);
-        Vec3 ks = ShaderParameters.specularColor(shader);
-        Double p = ShaderParameters.exponent(shader);
-        Texture texture = ShaderParameters.texture(shader);
+        Vec3 kd = shader.getDiffuseColor();
+        Vec3 ks = shader.getSpecularColor();
+        Double p = shader.getExponent();
+        Texture texture = shader.getTexture();
         if (texture != null) {
             s.append(", kd from ").append(texture);
         } else if (kd != null) {
             s.append(", kd = ").append(Fmt.vec(kd));
         }
-        if (shader instanceof Phong && ks != null && p != null) {
+        if (ks != null && p != null) {
             s.append(", ks = ").append(Fmt.vec(ks)).append(", p = ").append(Fmt.num(p));
         }
         if (shader instanceof Glazed) {
@@ -77,14 +76,14 @@ final class ShadingReport {
     }
 
     private Vec3 direct(Shader shader, IntersectionRecord hit, Ray ray, String in) {
-        out.println(in + (shader instanceof Phong
+        out.println(in + (shader.getSpecularColor() != null && shader.getExponent() != null
                 ? "L = Σ over lights of (kd ⊙ I · max(0, n·l) + ks ⊙ I · max(0, n·h)^p) / r²"
                 : "L = Σ over lights of kd ⊙ I · max(0, n·l) / r²") + ", without the lights whose shadow ray is blocked");
         String notUnit = RecordChecks.notUnit(hit.normal);
         out.println(Fmt.row(in, "n", Fmt.vec(hit.normal) + (notUnit == null ? "   (the hit's unit normal)"
                 : "   (the hit's normal, NOT unit length: |n| = " + Fmt.num(hit.normal.length()) + ")")));
         out.println(Fmt.row(in, "e", Fmt.vec(ray.direction.normalized().negate()) + "   (unit vector toward the eye)"));
-        Texture texture = ShaderParameters.texture(shader);
+        Texture texture = shader.getTexture();
         if (texture != null) {
             TextureReport.explain(texture, hit, in, out);
         }

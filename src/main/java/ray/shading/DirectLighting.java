@@ -20,6 +20,7 @@ public abstract class DirectLighting extends Shader {
         this.diffuseColor = diffuseColor;
     }
 
+    @Override
     public Vec3 getDiffuseColor() {
         return diffuseColor;
     }
@@ -30,11 +31,13 @@ public abstract class DirectLighting extends Shader {
     }
 
     /** The texture, or null. */
+    @Override
     public Texture getTexture() {
         return texture;
     }
 
     /** kd at a hit: the texture's color there, or the diffuse color when there is no texture. */
+    @Override
     public Vec3 diffuseColorAt(IntersectionRecord hit) {
         return texture != null ? texture.colorAt(hit) : diffuseColor;
     }

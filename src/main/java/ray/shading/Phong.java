@@ -24,11 +24,13 @@ public class Phong extends DirectLighting {
         this.exponent = exponent;
     }
 
+    @Override
     public Vec3 getSpecularColor() {
         return specularColor;
     }
 
-    public double getExponent() {
+    @Override
+    public Double getExponent() {
         return exponent;
     }
 

@@ -17,6 +17,34 @@ public abstract class Shader {
      */
     public abstract Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth);
 
+    // What ray1 trace and the explore page show of a shader: each says its own, null where it has none,
+    // so the inspection code needs no list of shader types.
+
+    /** Its diffuse color kd, or null. */
+    public Vec3 getDiffuseColor() {
+        return null;
+    }
+
+    /** The texture whose color replaces kd, or null. */
+    public Texture getTexture() {
+        return null;
+    }
+
+    /** kd at a hit (a texture's color there, else the diffuse color), or null for a shader without kd. */
+    public Vec3 diffuseColorAt(IntersectionRecord hit) {
+        return null;
+    }
+
+    /** Its specular color ks, or null. */
+    public Vec3 getSpecularColor() {
+        return null;
+    }
+
+    /** Its specular exponent p, or null. */
+    public Double getExponent() {
+        return null;
+    }
+
     /** The effects this shader itself calls for (a glaze: reflection; Phong: lighting, shadows, specular). */
     public Set<Effect> effects() {
         return Set.of();
