@@ -86,13 +86,13 @@ final class DiagnosisCase {
     /**
      * The case's files, side by side in {@code folder} (a flat submission, as a student uploads one).
      * A variant replaces some of the solution's files (a texture variant may hold RepeatTexture only),
-     * so its submission is the solution's files of {@code project} with the variant's in their place;
-     * an attempt is handed in as it is.
+     * so its submission is the solution's files of {@code project} (its {@code studentFiles}) with the
+     * variant's in their place; an attempt is handed in as it is.
      */
-    Path submissionIn(Path folder, Path project) throws IOException {
+    Path submissionIn(Path folder, Path project, Set<String> studentFiles) throws IOException {
         Files.createDirectories(folder);
         if (kind != Kind.ATTEMPT) {
-            for (String file : StudentFiles.in(project).keySet()) {
+            for (String file : studentFiles) {
                 Files.copy(project.resolve(file), folder.resolve(Path.of(file).getFileName().toString()), StandardCopyOption.REPLACE_EXISTING);
             }
         }

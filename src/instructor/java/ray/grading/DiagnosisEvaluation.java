@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -84,7 +85,7 @@ public final class DiagnosisEvaluation implements Callable<Integer> {
             List<Future<DiagnosisRow>> rows = new ArrayList<>();
             for (DiagnosisCase c : cases) {
                 rows.add(pool.submit(() -> {
-                    DiagnosisRow row = c.judge(grade(c, tree), mistakeOf);
+                    DiagnosisRow row = c.judge(grade(c, tree, studentFiles.keySet()), mistakeOf);
                     console.println(row.summary());
                     return row;
                 }));
@@ -103,10 +104,10 @@ public final class DiagnosisEvaluation implements Callable<Integer> {
     }
 
     /** {@code c} graded by the real grader on the shared compiled tree: its results.json. */
-    private GradedFeedback grade(DiagnosisCase c, CompiledTree tree) throws IOException {
+    private GradedFeedback grade(DiagnosisCase c, CompiledTree tree, Set<String> studentFiles) throws IOException {
         Path folder = out.resolve(c.name);
         ProjectTree.deleteRecursively(folder);
-        Path submission = c.submissionIn(folder.resolve("submission"), tree.root());
+        Path submission = c.submissionIn(folder.resolve("submission"), tree.root(), studentFiles);
         List<String> args = new ArrayList<>(List.of("--project", tree.root().toString(), "--classpath", classpath,
                 "--submission", submission.toString(), "--out", folder.toString()));
         if (c.task != null) {

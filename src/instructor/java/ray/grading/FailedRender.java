@@ -30,7 +30,7 @@ final class FailedRender {
 
     /** {@code t} as a failed render test whose render exists under {@code tree}, or null for any other outcome. */
     static FailedRender of(TestOutcome t, Path tree) {
-        if (t.passed() || !t.className().startsWith("ray.endtoend.")) {
+        if (t.passed() || !t.isRenderTest()) {
             return null;
         }
         Matcher parameter = PARAMETER.matcher(t.method());

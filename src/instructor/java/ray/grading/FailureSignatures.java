@@ -106,7 +106,7 @@ final class FailureSignatures {
     static Map<String, String> of(List<TestOutcome> outcomes) {
         Map<String, String> failed = new TreeMap<>();
         for (TestOutcome t : outcomes) {
-            if (!t.passed() && !t.bonus() && !t.className().startsWith("ray.endtoend.")) {
+            if (!t.passed() && !t.bonus() && !t.isRenderTest()) {
                 failed.put(t.id(), withNumbersRounded(t.message()));
             }
         }

@@ -124,7 +124,7 @@ public final class Grader implements Callable<Integer> {
             outcomes = outcomes.stream().map(t -> t.withMessage(RenderFeedback.withoutReportLine(t.message())))
                     .collect(java.util.stream.Collectors.toList());
             // A unit test's known mistake goes in its message; a render test's on its page (RenderFeedback).
-            outcomes = outcomes.stream().map(t -> mistakeNames.containsKey(t.id()) && !t.className().startsWith("ray.endtoend.")
+            outcomes = outcomes.stream().map(t -> mistakeNames.containsKey(t.id()) && !t.isRenderTest()
                     ? t.withMessage(t.message() + "\n" + mistakeNames.get(t.id())) : t).collect(java.util.stream.Collectors.toList());
             // Taken now: the render tests' pictures are in the work folder, which goes below.
             pictures = RenderFeedback.of(outcomes, sandbox.tree(), mistakeNames);

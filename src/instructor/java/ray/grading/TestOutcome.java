@@ -21,6 +21,16 @@ public record TestOutcome(String id, String className, String method, int task, 
         return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, false, why, seconds);
     }
 
+    /** Whether a test class is one of the whole-scene render tests (package ray.endtoend), not a unit test. */
+    static boolean isRenderTestClass(String className) {
+        return className.startsWith("ray.endtoend.");
+    }
+
+    /** Whether this is a whole-scene render test's outcome, not a unit test's. */
+    boolean isRenderTest() {
+        return isRenderTestClass(className);
+    }
+
     /** The points this outcome earns: all of them when it passed, none when it failed. */
     public double earned() {
         return passed ? points : 0;

@@ -306,7 +306,7 @@ public final class TestProcess {
         if (includeUngraded) {
             command.add("--include-ungraded");
         }
-        command.addAll(withoutRenderTests ? testClasses().stream().filter(c -> !c.startsWith("ray.endtoend."))
+        command.addAll(withoutRenderTests ? testClasses().stream().filter(c -> !TestOutcome.isRenderTestClass(c))
                 .collect(java.util.stream.Collectors.toList()) : testClasses());
         Path output = workDir.resolve("test-output.txt");
         Files.createDirectories(workDir);

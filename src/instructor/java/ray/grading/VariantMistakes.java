@@ -1,5 +1,6 @@
 package ray.grading;
 
+import java.awt.image.BufferedImage;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -70,6 +71,10 @@ final class VariantMistakes {
                 yourRenders.put(t.id(), render);
             }
         }
+        if (yourFailures.isEmpty() && yourRenders.isEmpty()) {
+            // Only bonus tests failed (a correct textbook form may): no mistake can be named, so none runs.
+            return Map.of();
+        }
         List<String> scenes = yourRenders.values().stream().map(r -> r.sceneFile).distinct().collect(Collectors.toList());
         Map<String, Map<String, String>> theirFailures = signatures(tree, mistakes, classpath, work, evidence);
         Map<String, String> names = new LinkedHashMap<>(byRenders(tree, yourRenders, scenes, yourFailures.keySet(), theirFailures,
@@ -139,8 +144,15 @@ final class VariantMistakes {
         // Only a mistake that fails the same unit tests can be named; only those render (side by side).
         List<Variant> candidates = mistakes.stream().filter(m -> theirFailures.containsKey(m.knownWrong)
                 && theirFailures.get(m.knownWrong).keySet().equals(yourFailedTests)).collect(Collectors.toList());
+        if (candidates.isEmpty()) {
+            return names;
+        }
         List<Optional<Map<String, byte[]>>> theirRenders = inParallel(candidates,
                 mistake -> evidence.renders(tree, mistake, scenes, classpath, workOf(work, mistake)));
+        Map<String, BufferedImage> yourImages = new LinkedHashMap<>();
+        for (Map.Entry<String, FailedRender> entry : yours.entrySet()) {
+            yourImages.put(entry.getKey(), ImageIO.read(entry.getValue().yours.toFile()));
+        }
         Map<String, Double> closest = new LinkedHashMap<>();
         for (int i = 0; i < candidates.size(); i++) {
             Map<String, byte[]> renders = theirRenders.get(i).orElse(Map.of());
@@ -149,8 +161,7 @@ final class VariantMistakes {
                 if (theirs == null) {
                     continue;
                 }
-                ImageDiff.Result diff = ImageDiff.compare(ImageIO.read(new ByteArrayInputStream(theirs)),
-                        ImageIO.read(entry.getValue().yours.toFile()));
+                ImageDiff.Result diff = ImageDiff.compare(ImageIO.read(new ByteArrayInputStream(theirs)), yourImages.get(entry.getKey()));
                 if (diff.passed() && diff.meanDifference() < closest.getOrDefault(entry.getKey(), Double.POSITIVE_INFINITY)) {
                     closest.put(entry.getKey(), diff.meanDifference());
                     names.put(entry.getKey(), MATCHES + candidates.get(i).knownWrong);
