@@ -9,7 +9,7 @@ import org.junit.rules.TemporaryFolder;
  * Checks that an element left open is reported where its start tag begins (its '<'), with the place
  * where the parser noticed (an end tag of an element around it, or the end of the file) in the
  * problem. An end tag that closes nothing open is a misspelling, reported where it is
- * ({@link SceneLoaderXmlErrorsTest#mismatchedEndTagIsMalformedXmlAtThatTag}).
+ * ({@link SceneLoaderErrorsTest}, "mismatched end tag is malformed XML at that tag").
  */
 public class SceneLoaderUnclosedTest {
     @Rule
