@@ -15,7 +15,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
 import ray.scene.Scene;
-import ray.shading.DirectLighting;
+import ray.shading.Effect;
 import ray.shading.Light;
 import ray.shading.Shader;
 
@@ -213,7 +213,8 @@ public final class PixelStory {
         }
         try {
             RecordedShading recorded = new RecordedShading(scene);
-            if (shader instanceof DirectLighting) {
+            // A shader that sums over the lights has a share of each to show.
+            if (shader.effects().contains(Effect.LIGHTING)) {
                 JsonArray lights = new JsonArray();
                 List<Light> all = scene.getLights();
                 for (int k = 0; k < all.size(); k++) {

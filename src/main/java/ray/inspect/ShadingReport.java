@@ -6,17 +6,17 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.scene.Scene;
-import ray.shading.DirectLighting;
-import ray.shading.Glazed;
 import ray.shading.Light;
-import ray.shading.RGBNormals;
 import ray.shading.Shader;
+import ray.shading.ShadingContext;
+import ray.shading.ShadingSteps;
 import ray.shading.Texture;
 
 /**
- * How the hit's shader turns it into radiance, step by step: light by light for Lambertian and
- * Phong, the normal's color for RGBNormals, Schlick's R, the mirror ray and the substrate for
- * Glazed. Every total printed is what the shader itself returns.
+ * How the hit's shader turns it into radiance, step by step. Each shader writes its own formula
+ * ({@link Shader#explain}); this report prints it and supplies the shared steps: the lights one by
+ * one for a lit shader, the mirror ray a glaze traces, a substrate explained in turn. Every total
+ * printed is what the shader itself returns.
  */
 final class ShadingReport {
     private final Scene scene;
@@ -31,101 +31,83 @@ final class ShadingReport {
         this.out = out;
     }
 
-    /** "Phong, kd = (…), ks = (…), p = 20". */
+    /** "Phong, kd = (…), ks = (…), p = 20", or "none". */
     static String describe(Shader shader) {
-        if (shader == null) {
-            return "none";
-        }
-        StringBuilder s = new StringBuilder(shader.getClass().getSimpleName());
-        Vec3 kd = shader.getDiffuseColor();
-        Vec3 ks = shader.getSpecularColor();
-        Double p = shader.getExponent();
-        Texture texture = shader.getTexture();
-        if (texture != null) {
-            s.append(", kd from ").append(texture);
-        } else if (kd != null) {
-            s.append(", kd = ").append(Fmt.vec(kd));
-        }
-        if (ks != null && p != null) {
-            s.append(", ks = ").append(Fmt.vec(ks)).append(", p = ").append(Fmt.num(p));
-        }
-        if (shader instanceof Glazed) {
-            Glazed g = (Glazed) shader;
-            s.append(", refractive index ").append(Fmt.num(g.getRefractiveIndex())).append(", over ").append(describe(g.getSubstrate()));
-        }
-        return s.toString();
+        return shader == null ? "none" : shader.describe(Fmt::num);
     }
 
     /** Prints the shading of {@code hit} seen along {@code ray}; returns the shader's result. */
     Vec3 explain(Shader shader, IntersectionRecord hit, Ray ray, String indent) {
         out.println(indent + "Shader " + describe(shader));
-        String in = indent + "  ";
-        if (shader instanceof Glazed) {
-            return glazed((Glazed) shader, hit, ray, in);
-        }
-        if (shader instanceof RGBNormals) {
-            out.println(Fmt.row(in, "L", "(n + 1)/2 = " + Fmt.vec(shader.shade(hit, ray, recorded, 0)) + "   (lights are not used)"));
-            return shader.shade(hit, ray, recorded, 0);
-        }
-        if (shader instanceof DirectLighting) {
-            return direct(shader, hit, ray, in);
-        }
-        Vec3 result = shader.shade(hit, ray, recorded, 0);
-        out.println(Fmt.row(in, "L", Fmt.vec(result) + "   (from its shade method; the trace knows no more of this shader)"));
-        return result;
+        return shader.explain(hit, ray, new Steps(indent + "  "));
     }
 
-    private Vec3 direct(Shader shader, IntersectionRecord hit, Ray ray, String in) {
-        out.println(in + (shader.getSpecularColor() != null && shader.getExponent() != null
-                ? "L = Σ over lights of (kd ⊙ I · max(0, n·l) + ks ⊙ I · max(0, n·h)^p) / r²"
-                : "L = Σ over lights of kd ⊙ I · max(0, n·l) / r²") + ", without the lights whose shadow ray is blocked");
-        String notUnit = RecordChecks.notUnit(hit.normal);
-        out.println(Fmt.row(in, "n", Fmt.vec(hit.normal) + (notUnit == null ? "   (the hit's unit normal)"
-                : "   (the hit's normal, NOT unit length: |n| = " + Fmt.num(hit.normal.length()) + ")")));
-        out.println(Fmt.row(in, "e", Fmt.vec(ray.direction.normalized().negate()) + "   (unit vector toward the eye)"));
-        Texture texture = shader.getTexture();
-        if (texture != null) {
-            TextureReport.explain(texture, hit, in, out);
-        }
-        List<Light> lights = scene.getLights();
-        if (lights.isEmpty()) {
-            out.println(in + "The scene has no <light>, so the surface is black.");
-        }
-        LightReport report = new LightReport(scene, names, recorded, out);
-        for (int k = 0; k < lights.size(); k++) {
-            report.explain(k + 1, lights.get(k), shader, hit, ray, in);
-        }
-        Vec3 total = shader.shade(hit, ray, recorded, 0);
-        out.println(Fmt.row(in, "L", Fmt.vec(total) + "   (the sum over the lights)"));
-        return total;
-    }
+    /** The steps every shader may take, printed at one indent. */
+    private final class Steps implements ShadingSteps {
+        private final String in;
 
-    private Vec3 glazed(Glazed glazed, IntersectionRecord hit, Ray ray, String in) {
-        Vec3 e = ray.direction.normalized().negate();
-        double cosTheta = hit.normal.dot(e);
-        double r = glazed.reflectance(cosTheta);
-        double n = glazed.getRefractiveIndex();
-        double r0 = Math.pow((n - 1) / (n + 1), 2);
-        out.println(in + "L = R · L_mirror + (1 − R) · L_substrate, R = R0 + (1 − R0)(1 − n·e)^5 (Schlick)");
-        out.println(Fmt.row(in, "n, e", Fmt.vec(hit.normal) + ", " + Fmt.vec(e) + "   (normal; unit vector toward the eye)"));
-        out.println(Fmt.row(in, "n·e", Fmt.num(cosTheta)));
-        out.println(Fmt.row(in, "R", Fmt.num(r) + "   (R0 = ((n − 1)/(n + 1))² = " + Fmt.num(r0) + ")"));
-        Vec3 lMirror = Vec3.ZERO;
-        if (r != 0) {
-            Vec3 mirror = hit.normal.times(2 * cosTheta).minus(e);
-            Ray reflection = recorded.reflectionRay(hit, mirror);
-            out.println(Fmt.row(in, "mirror", "2(n·e)n − e = " + Fmt.vec(mirror)));
-            out.println(Fmt.row(in, "reflection", "ray from " + Fmt.vec(reflection.origin) + " (just off the surface)"));
-            out.println(Fmt.row(in, "it hits", reflectionHit(reflection)));
-            lMirror = recorded.radiance(reflection.copy(), 1);
-            out.println(Fmt.row(in, "L_mirror", Fmt.vec(lMirror) + "   (the radiance it brings back, traced as the renderer does)"));
+        Steps(String in) {
+            this.in = in;
         }
-        out.println(in + "The substrate, weighted by 1 − R = " + Fmt.num(1 - r) + ":");
-        Vec3 substrate = explain(glazed.getSubstrate(), hit, ray, in + "  ");
-        Vec3 total = glazed.shade(hit, ray, recorded, 0);
-        out.println(Fmt.row(in, "L", "R · L_mirror + (1 − R) · L_substrate = " + Fmt.num(r) + " · " + Fmt.vec(lMirror)
-                + " + " + Fmt.num(1 - r) + " · " + Fmt.vec(substrate) + " = " + Fmt.vec(total)));
-        return total;
+
+        @Override
+        public void line(String text) {
+            out.println(in + text);
+        }
+
+        @Override
+        public void row(String label, String text) {
+            out.println(Fmt.row(in, label, text));
+        }
+
+        @Override
+        public String num(double x) {
+            return Fmt.num(x);
+        }
+
+        @Override
+        public ShadingContext context() {
+            return recorded;
+        }
+
+        @Override
+        public Vec3 lightByLight(Shader shader, IntersectionRecord hit, Ray ray) {
+            String notUnit = RecordChecks.notUnit(hit.normal);
+            row("n", Fmt.vec(hit.normal) + (notUnit == null ? "   (the hit's unit normal)"
+                    : "   (the hit's normal, NOT unit length: |n| = " + Fmt.num(hit.normal.length()) + ")"));
+            row("e", Fmt.vec(ray.direction.normalized().negate()) + "   (unit vector toward the eye)");
+            Texture texture = shader.getTexture();
+            if (texture != null) {
+                TextureReport.explain(texture, hit, in, out);
+            }
+            List<Light> lights = scene.getLights();
+            if (lights.isEmpty()) {
+                line("The scene has no <light>, so the surface is black.");
+            }
+            LightReport report = new LightReport(scene, names, recorded, out);
+            for (int k = 0; k < lights.size(); k++) {
+                report.explain(k + 1, lights.get(k), shader, hit, ray, in);
+            }
+            Vec3 total = shader.shade(hit, ray, recorded, 0);
+            row("L", Fmt.vec(total) + "   (the sum over the lights)");
+            return total;
+        }
+
+        @Override
+        public Vec3 mirror(IntersectionRecord hit, Vec3 direction) {
+            Ray reflection = recorded.reflectionRay(hit, direction);
+            row("mirror", "2(n·e)n − e = " + Fmt.vec(direction));
+            row("reflection", "ray from " + Fmt.vec(reflection.origin) + " (just off the surface)");
+            row("it hits", reflectionHit(reflection));
+            Vec3 radiance = recorded.radiance(reflection.copy(), 1);
+            row("L_mirror", Fmt.vec(radiance) + "   (the radiance it brings back, traced as the renderer does)");
+            return radiance;
+        }
+
+        @Override
+        public Vec3 part(Shader part, IntersectionRecord hit, Ray ray) {
+            return explain(part, hit, ray, in + "  ");
+        }
     }
 
     private String reflectionHit(Ray reflection) {

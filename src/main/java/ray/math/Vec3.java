@@ -1,5 +1,7 @@
 package ray.math;
 
+import java.util.function.DoubleFunction;
+
 /**
  * An immutable triple of doubles: a point, a direction or an RGB color.
  *
@@ -109,5 +111,10 @@ public final class Vec3 {
     @Override
     public String toString() {
         return "(" + x + ", " + y + ", " + z + ")";
+    }
+
+    /** "(x, y, z)", each coordinate written by {@code number} (as {@code ray1 trace} rounds them). */
+    public String format(DoubleFunction<String> number) {
+        return "(" + number.apply(x) + ", " + number.apply(y) + ", " + number.apply(z) + ")";
     }
 }

@@ -80,4 +80,12 @@ public abstract class DirectLighting extends Shader {
         }
         return new Vec3(r, g, b);
     }
+
+    @Override
+    public Vec3 explain(IntersectionRecord hit, Ray ray, ShadingSteps steps) {
+        steps.line((getSpecularColor() != null && getExponent() != null
+                ? "L = Σ over lights of (kd ⊙ I · max(0, n·l) + ks ⊙ I · max(0, n·h)^p) / r²"
+                : "L = Σ over lights of kd ⊙ I · max(0, n·l) / r²") + ", without the lights whose shadow ray is blocked");
+        return steps.lightByLight(this, hit, ray);
+    }
 }

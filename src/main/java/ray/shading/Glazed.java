@@ -3,6 +3,7 @@ package ray.shading;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
+import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
@@ -69,5 +70,30 @@ public class Glazed extends Shader {
         // Mirror direction: the eye direction reflected about the normal, 2(n·e)n − e.
         Vec3 mirror = hit.normal.times(2 * cosTheta).minus(toEye);
         return base.plus(context.radiance(hit, mirror, depth + 1).times(r));
+    }
+
+    @Override
+    public String describe(DoubleFunction<String> number) {
+        return super.describe(number) + ", refractive index " + number.apply(refractiveIndex)
+                + ", over " + (substrate == null ? "none" : substrate.describe(number));
+    }
+
+    @Override
+    public Vec3 explain(IntersectionRecord hit, Ray ray, ShadingSteps steps) {
+        Vec3 e = towardEye(ray);
+        double cosTheta = hit.normal.dot(e);
+        double r = reflectance(cosTheta);
+        steps.line("L = R · L_mirror + (1 − R) · L_substrate, R = R0 + (1 − R0)(1 − n·e)^5 (Schlick)");
+        steps.row("n, e", steps.vec(hit.normal) + ", " + steps.vec(e) + "   (normal; unit vector toward the eye)");
+        steps.row("n·e", steps.num(cosTheta));
+        // Head on (cos θ = 1) Schlick's R is R0 itself.
+        steps.row("R", steps.num(r) + "   (R0 = ((n − 1)/(n + 1))² = " + steps.num(reflectance(1)) + ")");
+        Vec3 lMirror = r == 0 ? Vec3.ZERO : steps.mirror(hit, hit.normal.times(2 * cosTheta).minus(e));
+        steps.line("The substrate, weighted by 1 − R = " + steps.num(1 - r) + ":");
+        Vec3 lSubstrate = steps.part(substrate, hit, ray);
+        Vec3 total = shade(hit, ray, steps.context(), 0);
+        steps.row("L", "R · L_mirror + (1 − R) · L_substrate = " + steps.num(r) + " · " + steps.vec(lMirror)
+                + " + " + steps.num(1 - r) + " · " + steps.vec(lSubstrate) + " = " + steps.vec(total));
+        return total;
     }
 }

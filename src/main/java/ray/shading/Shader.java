@@ -3,6 +3,7 @@ package ray.shading;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
+import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
@@ -63,6 +64,38 @@ public abstract class Shader {
             all.addAll(part.allEffects());
         }
         return all;
+    }
+
+    /**
+     * A short name with its parameters, as {@code ray1 trace} and the explore page show it, each
+     * number written by {@code number}: "Phong, kd = (1, 0, 0), ks = (0.5, 0.5, 0.5), p = 20",
+     * "Lambertian, kd from Texture data/textures/earth.png". A shader with parameters of its own adds them.
+     */
+    public String describe(DoubleFunction<String> number) {
+        StringBuilder s = new StringBuilder(toString());
+        Vec3 kd = getDiffuseColor();
+        Vec3 ks = getSpecularColor();
+        Double p = getExponent();
+        if (getTexture() != null) {
+            s.append(", kd from ").append(getTexture());
+        } else if (kd != null) {
+            s.append(", kd = ").append(kd.format(number));
+        }
+        if (ks != null && p != null) {
+            s.append(", ks = ").append(ks.format(number)).append(", p = ").append(number.apply(p));
+        }
+        return s.toString();
+    }
+
+    /**
+     * Writes down how this shader shades {@code hit}, step by step, and returns the radiance, which
+     * must be what {@link #shade} returns for a camera ray. A shader that does not say is shown by
+     * its result alone.
+     */
+    public Vec3 explain(IntersectionRecord hit, Ray ray, ShadingSteps steps) {
+        Vec3 result = shade(hit, ray, steps.context(), 0);
+        steps.row("L", steps.vec(result) + "   (from its shade method; the trace knows no more of this shader)");
+        return result;
     }
 
     /** Unit vector from the hit toward where the ray came from. */
