@@ -3,7 +3,6 @@ package ray.accel;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Bounds;
-import ray.surface.Surface;
 
 /**
  * A bounding volume hierarchy over a fixed list of primitives, in flat arrays: node k's box is
@@ -23,7 +22,7 @@ public final class Bvh {
     static final int MAX_DEPTH = 64;
 
     /** The primitives in file order (the caller's array, shared, not copied). */
-    final Surface[] items;
+    final Hittable[] items;
     /** The primitives in tree order, by their index in {@link #items}: leaves are ranges of it, and the index breaks ties as a linear loop does. */
     final int[] order;
     final float[] boxes;
@@ -31,7 +30,7 @@ public final class Bvh {
     /** The most far children a search can have waiting: the tree's depth. */
     private final int stackSize;
 
-    Bvh(Surface[] items, int[] order, float[] boxes, int[] links, int depth) {
+    Bvh(Hittable[] items, int[] order, float[] boxes, int[] links, int depth) {
         this.items = items;
         this.order = order;
         this.boxes = boxes;

@@ -3,7 +3,6 @@ package ray.accel;
 import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveTask;
 import ray.math.Bounds;
-import ray.surface.Surface;
 
 /**
  * Builds a {@link Bvh} by the surface area heuristic on binned centroids (Wald 2007, "On fast
@@ -44,7 +43,7 @@ public final class BvhBuilder {
      * The hierarchy over {@code primitives} (kept, not copied), whose file order ties are broken by; with
      * {@code split} false, a single leaf (the primitives' box, then each of them in file order).
      */
-    public static Bvh build(Surface[] primitives, boolean split) {
+    public static Bvh build(Hittable[] primitives, boolean split) {
         int n = primitives.length;
         BvhBuilder b = new BvhBuilder(n);
         for (int i = 0; i < n; i++) {

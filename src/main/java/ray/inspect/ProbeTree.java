@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import ray.Ray;
 import ray.math.Affine;
+import ray.shading.Effect;
 import ray.surface.Surface;
-import ray.surface.Transformed;
 
 /** Tests a ray against every primitive of a surface tree, one by one, and keeps the results as a tree. */
 final class ProbeTree {
@@ -84,13 +84,14 @@ final class ProbeTree {
     }
 
     private static ProbeNode probe(Surface surface, Ray ray, Affine toWorld, int index) {
-        if (surface instanceof Transformed) {
-            Transformed placed = (Transformed) surface;
-            // The same map and the same arithmetic as Transformed.intersect, so the local t values match.
-            Affine toLocal = placed.toWorld().inverse();
+        if (surface.effects().contains(Effect.TRANSFORMS) && surface.children().size() == 1) {
+            // A placement is shown as the surface it places, with the ray in that surface's coordinates:
+            // the same map and the same arithmetic as Transformed.intersect, so the local t values match.
+            Affine placement = surface.childPlacement();
+            Affine toLocal = placement.inverse();
             Ray local = new Ray(toLocal.applyToPoint(ray.origin), toLocal.applyToVector(ray.direction), ray.start, ray.end);
-            Surface inner = placed.children().get(0);
-            ProbeNode node = new ProbeNode(inner, true, local, toWorld.after(placed.toWorld()), index);
+            Surface inner = surface.children().get(0);
+            ProbeNode node = new ProbeNode(inner, true, local, toWorld.after(placement), index);
             fill(node, inner, local);
             return node;
         }

@@ -5,12 +5,12 @@ import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
-import ray.surface.SphereShape;
+import ray.surface.Surface;
 
 /**
  * What a hit record claims, checked against the intersect contract: its t lies inside the ray's
- * segment (start, end), its normal has unit length, and a sphere seen from outside is hit where the
- * ray enters it. A surface that ignores ray.start reports
+ * segment (start, end), its normal has unit length, and what its own surface checks (a sphere seen
+ * from outside is hit where the ray enters it). A surface that ignores ray.start reports
  * hits behind a shadow ray's start (a point shadowed by what lies behind it); one that assumes a
  * unit direction reports normals of any length, which the shading then takes as unit ones.
  */
@@ -24,7 +24,7 @@ final class RecordChecks {
     /** Every check of a camera ray's closest hit that fails, in the order the trace prints them. */
     static List<String> of(IntersectionRecord hit, Ray ray) {
         List<String> flags = new ArrayList<>();
-        for (String flag : new String[] {outsideSegment(hit.t, ray, "camera ray"), notUnit(hit.normal), farRoot(hit, ray)}) {
+        for (String flag : new String[] {outsideSegment(hit.t, ray, "camera ray"), notUnit(hit.normal), shapeDoubt(hit, ray)}) {
             if (flag != null) {
                 flags.add(flag);
             }
@@ -51,26 +51,9 @@ final class RecordChecks {
         return null;
     }
 
-    /**
-     * Why a sphere's hit looks like the far root, or null: the ray starts outside the sphere, yet the
-     * normal faces along the ray (n·d > 0), as it does where the ray leaves the sphere. Only for a hit
-     * that lies on the sphere as given (not moved by a transform), so that the eye's place can be
-     * compared with the center.
-     */
-    static String farRoot(IntersectionRecord hit, Ray ray) {
-        if (!(hit.surface instanceof SphereShape) || hit.normal == null || hit.location == null) {
-            return null;
-        }
-        SphereShape sphere = (SphereShape) hit.surface;
-        Vec3 center = sphere.getCenter();
-        double radius = sphere.getRadius();
-        boolean onTheSphere = Math.abs(hit.location.minus(center).length() - radius) <= 1e-6 * (radius + center.length());
-        boolean outside = ray.origin.minus(center).length() > radius;
-        if (!onTheSphere || !outside || !(hit.normal.dot(ray.direction) > 0)) {
-            return null;
-        }
-        return "the ray starts outside the sphere, yet this normal faces away from the eye (n·d > 0), as it does where"
-                + " the ray leaves the sphere: is this the far root? The hit is the smaller root inside (start, end)";
+    /** What the hit's own surface finds wrong with it ({@link Surface#doubtAbout}), or null. */
+    static String shapeDoubt(IntersectionRecord hit, Ray ray) {
+        return hit.surface == null || hit.normal == null || hit.location == null ? null : hit.surface.doubtAbout(hit, ray);
     }
 
     /** Why {@code normal} is no unit normal, or null when its length is 1: "not unit length: |n| = 2.4691; …". */

@@ -15,18 +15,16 @@ import ray.math.Bounds;
 import ray.math.Vec3;
 import ray.scene.Scene;
 import ray.shading.Light;
-import ray.surface.Box;
-import ray.surface.CylinderShape;
-import ray.surface.Mesh;
-import ray.surface.SphereShape;
+import ray.surface.Sketch;
 import ray.surface.Surface;
 import ray.surface.TriangleShape;
 
 /**
  * The scene as the explore page draws it (top and side views): the camera, the lights, and every
- * surface in world coordinates, groups and placements resolved. A sphere, box or cylinder that a
- * placement only moves keeps its shape; one it rotates or scales is drawn as its world bounding box
- * ("other"), which is all a sketch needs. A mesh sends at most {@value #MAX_TRIANGLES} triangles.
+ * surface in world coordinates, groups and placements resolved. Each surface sketches itself
+ * ({@link Surface#sketch}): a sphere, box or cylinder that a placement only moves keeps its shape;
+ * one it rotates or scales is drawn as its world bounding box ("other") or its triangles, which is
+ * all a sketch needs. A mesh sends at most {@value #MAX_TRIANGLES} triangles.
  */
 final class SceneOutline {
     static final int MAX_TRIANGLES = 4000;
@@ -82,77 +80,78 @@ final class SceneOutline {
     }
 
     private void add(Surface surface, Affine toWorld, String name) {
-        boolean moves = isTranslation(toWorld);
-        if (surface instanceof Mesh || surface instanceof Box) {
-            if (surface instanceof Box && moves) {
-                Box box = (Box) surface;
-                shape("box", name, toWorld.applyToPoint(box.getMinPt()), toWorld.applyToPoint(box.getMaxPt()));
-                return;
-            }
-            triangles(surface, toWorld, name);
-            return;
+        surface.sketch(new Drawing(name), toWorld);
+    }
+
+    /** One surface's drawing, each shape it sketches an entry under its name. */
+    private final class Drawing implements Sketch {
+        private final String name;
+
+        Drawing(String name) {
+            this.name = name;
         }
-        if (surface instanceof SphereShape && moves) {
-            SphereShape s = (SphereShape) surface;
+
+        @Override
+        public void sphere(Vec3 center, double radius) {
             JsonObject o = entry("sphere", name);
-            Vec3 center = toWorld.applyToPoint(s.getCenter());
             o.add("center", vec(center));
-            o.add("radius", num(s.getRadius()));
-            include(Bounds.around(center, s.getRadius()));
-            return;
+            o.add("radius", num(radius));
+            include(Bounds.around(center, radius));
         }
-        if (surface instanceof CylinderShape && moves) {
-            CylinderShape c = (CylinderShape) surface;
+
+        @Override
+        public void cylinder(Vec3 center, double radius, double height) {
             JsonObject o = entry("cylinder", name);
-            Vec3 center = toWorld.applyToPoint(c.getCenter());
             o.add("center", vec(center));
-            o.add("radius", num(c.getRadius()));
-            o.add("height", num(c.getHeight()));
-            double r = c.getRadius();
-            double h = c.getHeight() / 2;
-            include(Bounds.of(center.minus(new Vec3(r, h, r)), center.plus(new Vec3(r, h, r))));
-            return;
+            o.add("radius", num(radius));
+            o.add("height", num(height));
+            Vec3 half = new Vec3(radius, height / 2, radius);
+            include(Bounds.of(center.minus(half), center.plus(half)));
         }
-        if (surface instanceof TriangleShape) {
-            TriangleShape t = (TriangleShape) surface;
-            JsonObject o = entry("triangle", name);
-            o.add("vertices", triangle(t, toWorld));
-            return;
+
+        @Override
+        public void box(Vec3 min, Vec3 max) {
+            shape("box", name, min, max);
         }
-        List<Surface> children = surface.children();
-        if (children.isEmpty()) {
-            Bounds b = surface.bounds().transformed(toWorld);
+
+        @Override
+        public void triangle(Vec3 a, Vec3 b, Vec3 c) {
+            entry("triangle", name).add("vertices", vertices(a, b, c));
+        }
+
+        @Override
+        public void mesh(List<? extends TriangleShape> triangles, Affine toWorld) {
+            JsonObject o = entry("mesh", name);
+            JsonArray list = new JsonArray();
+            for (int k = 0; k < triangles.size() && k < MAX_TRIANGLES; k++) {
+                TriangleShape t = triangles.get(k);
+                list.add(vertices(toWorld.applyToPoint(t.getV0()), toWorld.applyToPoint(t.getV1()), toWorld.applyToPoint(t.getV2())));
+            }
+            o.add("triangles", list);
+            o.addProperty("truncated", triangles.size() > MAX_TRIANGLES);
+        }
+
+        @Override
+        public void parts(Surface whole, Affine toWorld) {
+            List<Surface> children = whole.children();
+            for (int k = 0; k < children.size(); k++) {
+                add(children.get(k), toWorld, name + " › #" + (k + 1) + " " + names.of(children.get(k)));
+            }
+        }
+
+        @Override
+        public void bounds(Bounds b) {
             if (b.isFinite() && !b.isEmpty()) {
                 shape("other", name, new Vec3(b.minX, b.minY, b.minZ), new Vec3(b.maxX, b.maxY, b.maxZ));
             }
-            return;
-        }
-        Affine inner = toWorld.after(surface.childPlacement());
-        for (int k = 0; k < children.size(); k++) {
-            add(children.get(k), inner, name + " › #" + (k + 1) + " " + names.of(children.get(k)));
         }
     }
 
-    private void triangles(Surface shape, Affine toWorld, String name) {
-        JsonObject o = entry("mesh", name);
-        JsonArray list = new JsonArray();
-        List<Surface> parts = shape.children();
-        Affine inner = toWorld.after(shape.childPlacement());
-        for (int k = 0; k < parts.size() && k < MAX_TRIANGLES; k++) {
-            if (parts.get(k) instanceof TriangleShape) {
-                list.add(triangle((TriangleShape) parts.get(k), inner));
-            }
-        }
-        o.add("triangles", list);
-        o.addProperty("truncated", parts.size() > MAX_TRIANGLES);
-    }
-
-    private JsonArray triangle(TriangleShape t, Affine toWorld) {
+    private JsonArray vertices(Vec3... world) {
         JsonArray vertices = new JsonArray();
-        for (Vec3 p : new Vec3[] {t.getV0(), t.getV1(), t.getV2()}) {
-            Vec3 world = toWorld.applyToPoint(p);
-            vertices.add(vec(world));
-            include(world);
+        for (Vec3 p : world) {
+            vertices.add(vec(p));
+            include(p);
         }
         return vertices;
     }
@@ -183,13 +182,5 @@ final class SceneOutline {
         if (b.isFinite()) {
             bounds = bounds.union(b);
         }
-    }
-
-    /** Whether the map only moves points (its linear part is the identity), so shapes keep their form. */
-    private static boolean isTranslation(Affine m) {
-        Vec3 x = m.applyToVector(new Vec3(1, 0, 0));
-        Vec3 y = m.applyToVector(new Vec3(0, 1, 0));
-        Vec3 z = m.applyToVector(new Vec3(0, 0, 1));
-        return x.equals(new Vec3(1, 0, 0)) && y.equals(new Vec3(0, 1, 0)) && z.equals(new Vec3(0, 0, 1));
     }
 }

@@ -142,14 +142,19 @@ public final class Affine {
         return new Affine(m, linearInverse.applyToVector(b).negate());
     }
 
-    /** Exactly the identity (−0.0 counts as 0, as a rotation by 0° produces it). */
-    public boolean isIdentity() {
+    /** Whether it only moves points: its linear part is exactly the identity, so shapes keep their form. */
+    public boolean isTranslation() {
         for (int k = 0; k < 9; k++) {
             if (a[k] != IDENTITY.a[k]) {
                 return false;
             }
         }
-        return b.x == 0 && b.y == 0 && b.z == 0;
+        return true;
+    }
+
+    /** Exactly the identity (−0.0 counts as 0, as a rotation by 0° produces it). */
+    public boolean isIdentity() {
+        return isTranslation() && b.x == 0 && b.y == 0 && b.z == 0;
     }
 
     @Override

@@ -6,7 +6,6 @@ import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.accel.SearchCounter;
-import ray.accel.SearchTree;
 import ray.math.Vec3;
 import ray.shading.Effect;
 import ray.shading.Shader;
@@ -42,7 +41,7 @@ final class CountingShading extends SceneShading {
     }
 
     private CountingShading(RenderPlan plan, SearchCounter counter, boolean recordKinds) {
-        super(plan.scene(), plan.offsets(), SearchTree.of(plan.scene().getSurfaces(), plan.acceleration(), counter),
+        super(plan.scene(), plan.offsets(), plan.scene().getSurfaces().searchCopy(plan.acceleration(), counter),
                 plan.acceleration());
         this.counter = counter;
         this.recordKinds = recordKinds;

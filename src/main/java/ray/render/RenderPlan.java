@@ -12,7 +12,6 @@ import ray.scene.Scene;
 import ray.shading.Effect;
 import ray.shading.Glazed;
 import ray.shading.Shader;
-import ray.surface.Group;
 import ray.surface.Surface;
 
 /**
@@ -272,16 +271,13 @@ public final class RenderPlan {
             if (own.contains(Effect.ACCELERATION)) {
                 treeTriangles += s.children().size();
             }
-            List<Surface> children = s.children();
-            if (children.isEmpty()) {
-                // An empty group tests nothing; every other leaf is one primitive.
-                if (!(s instanceof Group)) {
-                    primitives++;
-                    shader(s.getShader());
-                }
+            if (s.isPrimitive()) {
+                primitives++;
+                shader(s.getShader());
                 return;
             }
-            for (Surface child : children) {
+            // A group's parts (an empty group tests nothing).
+            for (Surface child : s.children()) {
                 surface(child);
             }
         }

@@ -42,7 +42,7 @@ public class SceneShading implements ShadingContext {
     }
 
     /**
-     * A shading context that searches {@code surfaces} (the scene's, or a {@link ray.accel.SearchTree} made
+     * A shading context that searches {@code surfaces} (the scene's, or a counting copy, {@link Surface#searchCopy},
      * of them), with shadow rays as {@code acceleration} says.
      */
     protected SceneShading(Scene scene, RayOffsets offsets, Surface surfaces, Acceleration acceleration) {

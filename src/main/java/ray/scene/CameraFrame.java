@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import ray.math.Vec3;
 import ray.shading.Light;
-import ray.surface.Group;
 import ray.surface.Surface;
 
 /**
@@ -49,27 +48,11 @@ public final class CameraFrame {
         }
         List<Surface> surfaces = new ArrayList<>();
         for (Surface child : scene.getSurfaces().children()) {
-            surfaces.add(inFrameAt(child, eye));
+            surfaces.add(child.inFrameAt(eye));
         }
         Scene moved = scene.withParts(scene.getCamera().inFrameAt(eye), lights, surfaces);
         // A rebuilt box or mesh has new triangles, which take its shader as the loaded ones did.
         moved.complete();
-        return moved;
-    }
-
-    /**
-     * A surface in the frame at {@code origin}: a plain group by moving its children (Group is a
-     * student's file, so the framework moves it from outside), anything else by its own {@link Surface#inFrameAt}.
-     */
-    private static Surface inFrameAt(Surface surface, Vec3 origin) {
-        if (surface.getClass() != Group.class) {
-            return surface.inFrameAt(origin);
-        }
-        Group moved = new Group();
-        moved.setShader(surface.getShader());
-        for (Surface child : surface.children()) {
-            moved.addSurface(inFrameAt(child, origin));
-        }
         return moved;
     }
 }

@@ -3,6 +3,7 @@ package ray.surface;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.DoubleFunction;
+import ray.math.Affine;
 import ray.math.Vec3;
 
 /**
@@ -174,6 +175,16 @@ public class Box extends TriangleSet implements WarnsOnLoad {
         return "Box[" + minPt + " to " + maxPt + "]";
     }
 
+    /** A box that is only moved stays an axis-aligned box; one turned or scaled is drawn as its triangles. */
+    @Override
+    public void sketch(Sketch sketch, Affine toWorld) {
+        if (toWorld.isTranslation()) {
+            sketch.box(toWorld.applyToPoint(getMinPt()), toWorld.applyToPoint(getMaxPt()));
+        } else {
+            super.sketch(sketch, toWorld);
+        }
+    }
+
     @Override
     public String describe(DoubleFunction<String> number) {
         return "Box " + vec(getMinPt(), number) + " to " + vec(getMaxPt(), number);
@@ -183,7 +194,7 @@ public class Box extends TriangleSet implements WarnsOnLoad {
     @Override
     public String partName(Surface part, int index) {
         String name = super.partName(part, index);
-        Vec3 n = part instanceof TriangleShape ? ((TriangleShape) part).getFaceNormal() : null;
+        Vec3 n = index >= 0 && index < triangleCount() ? triangles().get(index).getFaceNormal() : null;
         if (n == null) {
             return name;
         }

@@ -1,6 +1,7 @@
 package ray.surface;
 
 import ray.IntersectionRecord;
+import ray.math.Affine;
 import ray.math.Bounds;
 import ray.math.Vec3;
 
@@ -70,5 +71,19 @@ public abstract class CylinderShape extends RoundShape {
     @Override
     public SurfaceKind kind() {
         return SurfaceKind.CYLINDER;
+    }
+
+    /**
+     * A cylinder that is only moved stays upright, drawn about the middle of its axis (half the
+     * height above {@code center}, which is the bottom cap's); one turned or scaled is drawn as its
+     * bounding box.
+     */
+    @Override
+    public void sketch(Sketch sketch, Affine toWorld) {
+        if (toWorld.isTranslation()) {
+            sketch.cylinder(toWorld.applyToPoint(center.plus(new Vec3(0, height / 2, 0))), radius, height);
+        } else {
+            super.sketch(sketch, toWorld);
+        }
     }
 }

@@ -1,24 +1,10 @@
 package ray.surface;
 
-import java.util.ArrayList;
-import java.util.Collections;
-import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 
-/** A list of surfaces, hit by the closest of them. */
-public class Group extends Surface {
-    private final List<Surface> surfaces = new ArrayList<>();
-
-    public void addSurface(Surface surface) {
-        surfaces.add(surface);
-    }
-
-    @Override
-    public List<Surface> children() {
-        return Collections.unmodifiableList(surfaces);
-    }
-
+/** A list of surfaces (GroupShape's {@code surfaces}, in the scene's order), hit by the closest of them. */
+public class Group extends GroupShape {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         // TODO(Task 4): find the closest hit among this group's surfaces.
@@ -40,10 +26,5 @@ public class Group extends Surface {
         return hitAny;
         // END SOLUTION
         // STUB: return false;
-    }
-
-    @Override
-    public String toString() {
-        return "Group[" + surfaces.size() + " surfaces]";
     }
 }

@@ -2,6 +2,8 @@ package ray.surface;
 
 import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
+import ray.Ray;
+import ray.math.Affine;
 import ray.math.Bounds;
 import ray.math.Vec3;
 
@@ -58,5 +60,31 @@ public abstract class SphereShape extends RoundShape {
     @Override
     public String describe(DoubleFunction<String> number) {
         return "Sphere center " + vec(center, number) + ", radius " + number.apply(radius);
+    }
+
+    /**
+     * The far root: the ray starts outside the sphere, yet the normal faces along the ray (n·d > 0), as
+     * it does where the ray leaves the sphere. Only for a hit that lies on the sphere as given (not
+     * moved by a transform), so that the eye's place can be compared with the center.
+     */
+    @Override
+    public String doubtAbout(IntersectionRecord hit, Ray ray) {
+        boolean onTheSphere = Math.abs(hit.location.minus(center).length() - radius) <= 1e-6 * (radius + center.length());
+        boolean outside = ray.origin.minus(center).length() > radius;
+        if (!onTheSphere || !outside || !(hit.normal.dot(ray.direction) > 0)) {
+            return null;
+        }
+        return "the ray starts outside the sphere, yet this normal faces away from the eye (n·d > 0), as it does where"
+                + " the ray leaves the sphere: is this the far root? The hit is the smaller root inside (start, end)";
+    }
+
+    /** A sphere that is only moved stays a sphere; one turned or scaled is drawn as its bounding box. */
+    @Override
+    public void sketch(Sketch sketch, Affine toWorld) {
+        if (toWorld.isTranslation()) {
+            sketch.sphere(toWorld.applyToPoint(center), radius);
+        } else {
+            super.sketch(sketch, toWorld);
+        }
     }
 }

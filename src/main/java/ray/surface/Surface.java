@@ -5,6 +5,9 @@ import java.util.Set;
 import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.accel.Acceleration;
+import ray.accel.Hittable;
+import ray.accel.SearchCounter;
 import ray.math.Affine;
 import ray.math.Bounds;
 import ray.math.Vec3;
@@ -18,7 +21,7 @@ import ray.shading.Shader;
  * ray.start &lt; t &lt; ray.end, and then fills the record (t, location, unit outward normal,
  * the primitive that was hit); on a miss it leaves the record untouched.
  */
-public abstract class Surface implements Cloneable {
+public abstract class Surface implements Hittable, Cloneable {
     private Shader shader;
 
     /**
@@ -59,8 +62,8 @@ public abstract class Surface implements Cloneable {
     public Bounds bounds() {
         List<Surface> parts = children();
         if (parts.isEmpty()) {
-            // An empty group holds nothing; any other surface without parts is a primitive.
-            return this instanceof Group ? Bounds.EMPTY : Bounds.EVERYTHING;
+            // A primitive that does not say where it can be hit may be hit anywhere (an empty group says nothing can).
+            return Bounds.EVERYTHING;
         }
         Bounds box = Bounds.EMPTY;
         for (Surface part : parts) {
@@ -92,6 +95,25 @@ public abstract class Surface implements Cloneable {
     /** The surfaces this one is made of (empty for a primitive), for walking the scene tree. */
     public List<Surface> children() {
         return List.of();
+    }
+
+    /**
+     * Whether this is one primitive, tested by one call of its {@code intersect}: a surface without
+     * parts that holds none by nature (a group, even an empty one, is no primitive).
+     */
+    public boolean isPrimitive() {
+        return children().isEmpty();
+    }
+
+    /**
+     * The copy of this surface that one renderer thread searches, counting every intersection test
+     * and box test into {@code counter} where it happens, and searching as {@code acceleration}
+     * says. It is hit where this surface is, and a hit names the same primitive (the primitive
+     * fills the record). This default counts one test per search: a primitive, or any surface not
+     * known to be made of parts.
+     */
+    public Surface searchCopy(Acceleration acceleration, SearchCounter counter) {
+        return new CountedSurface(this, counter);
     }
 
     /** The effects this surface itself calls for (a placed surface: transforms; a smooth triangle: vertex normals). */
@@ -154,14 +176,35 @@ public abstract class Surface implements Cloneable {
         return null;
     }
 
+    /**
+     * Draws this surface for the explore page, mapped to the world by {@code toWorld}: its parts one
+     * by one, or, for a primitive that draws nothing of its own, its bounding box.
+     */
+    public void sketch(Sketch sketch, Affine toWorld) {
+        if (children().isEmpty()) {
+            sketch.bounds(bounds().transformed(toWorld));
+        } else {
+            sketch.parts(this, toWorld.after(childPlacement()));
+        }
+    }
+
     /** "(x, y, z)", each coordinate written by {@code number}. */
     protected static String vec(Vec3 p, DoubleFunction<String> number) {
-        return p == null ? "null" : "(" + number.apply(p.x) + ", " + number.apply(p.y) + ", " + number.apply(p.z) + ")";
+        return p == null ? "null" : p.format(number);
     }
 
     /** "12 triangles", "1 surface". */
     protected static String count(int n, String noun) {
         return n + " " + noun + (n == 1 ? "" : "s");
+    }
+
+    /**
+     * Why a hit this primitive reported (with a location and a normal) breaks what its shape
+     * promises, for {@code ray1 trace} to flag, or null when nothing is seen to be wrong. A shape
+     * that knows its inside says so (a sphere: the far root).
+     */
+    public String doubtAbout(IntersectionRecord hit, Ray ray) {
+        return null;
     }
 
     /**

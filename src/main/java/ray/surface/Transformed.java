@@ -5,6 +5,7 @@ import java.util.Set;
 import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.accel.Acceleration;
 import ray.accel.SearchCounter;
 import ray.math.Affine;
 import ray.math.Bounds;
@@ -42,11 +43,12 @@ public final class Transformed extends Surface {
     }
 
     /**
-     * The same placement of another surface (a counting copy of this one's), testing its box first
-     * or not, and counting those tests into {@code counter} (may be null).
+     * The same placement of the placed surface's counted copy; with acceleration a ray is tested
+     * against its box first, each box test counted.
      */
-    public Transformed placing(Surface other, boolean testBounds, SearchCounter counter) {
-        return new Transformed(other, toWorld, toLocal, testBounds, counter);
+    @Override
+    public Surface searchCopy(Acceleration acceleration, SearchCounter counter) {
+        return new Transformed(surface.searchCopy(acceleration, counter), toWorld, toLocal, acceleration == Acceleration.BVH, counter);
     }
 
     /** The same placement, taken by a translation: the linear part stays, the translation moves by −origin (one rounding). */

@@ -6,9 +6,11 @@ import java.util.List;
 import java.util.Set;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.accel.Acceleration;
 import ray.accel.Bvh;
 import ray.accel.BvhBuilder;
 import ray.accel.SearchCounter;
+import ray.math.Affine;
 import ray.math.Bounds;
 import ray.shading.Effect;
 
@@ -41,6 +43,23 @@ public abstract class TriangleSet extends Surface {
 
     @Override
     public List<Surface> children() {
+        return Collections.unmodifiableList(Arrays.asList(triangles));
+    }
+
+    /** Searched through its hierarchy, or by the plain loop without acceleration, counting both kinds of test. */
+    @Override
+    public Surface searchCopy(Acceleration acceleration, SearchCounter counter) {
+        return new CountedTriangleSet(this, acceleration, counter);
+    }
+
+    /** Drawn as one shape of triangles. */
+    @Override
+    public void sketch(Sketch sketch, Affine toWorld) {
+        sketch.mesh(triangles(), toWorld.after(childPlacement()));
+    }
+
+    /** The triangles in file order. */
+    public List<Triangle> triangles() {
         return Collections.unmodifiableList(Arrays.asList(triangles));
     }
 

@@ -3,6 +3,7 @@ package ray.surface;
 import java.util.Set;
 import java.util.function.DoubleFunction;
 import ray.IntersectionRecord;
+import ray.math.Affine;
 import ray.math.Bounds;
 import ray.math.Vec3;
 import ray.shading.Effect;
@@ -210,5 +211,11 @@ public abstract class TriangleShape extends Surface {
     @Override
     public String describe(DoubleFunction<String> number) {
         return "Triangle " + vec(v0, number) + ", " + vec(v1, number) + ", " + vec(v2, number);
+    }
+
+    /** Any placement maps a triangle to a triangle. */
+    @Override
+    public void sketch(Sketch sketch, Affine toWorld) {
+        sketch.triangle(toWorld.applyToPoint(v0), toWorld.applyToPoint(v1), toWorld.applyToPoint(v2));
     }
 }

@@ -1,24 +1,10 @@
 package ray.surface;
 
-import java.util.ArrayList;
-import java.util.Collections;
-import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 
 /** An index loop that builds a new, shorter ray for each child from the closest t so far. */
-public class Group extends Surface {
-    private final List<Surface> surfaces = new ArrayList<>();
-
-    public void addSurface(Surface surface) {
-        surfaces.add(surface);
-    }
-
-    @Override
-    public List<Surface> children() {
-        return Collections.unmodifiableList(surfaces);
-    }
-
+public class Group extends GroupShape {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         double closest = ray.end;

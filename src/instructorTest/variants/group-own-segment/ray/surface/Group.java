@@ -1,24 +1,10 @@
 package ray.surface;
 
-import java.util.ArrayList;
-import java.util.Collections;
-import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 
 /** Known wrong: searches its own segment (1e-3, ∞) instead of the caller's, so a shadow ray is blocked beyond the light and a ray starting at 0 misses what lies within 1e-3. */
-public class Group extends Surface {
-    private final List<Surface> surfaces = new ArrayList<>();
-
-    public void addSurface(Surface surface) {
-        surfaces.add(surface);
-    }
-
-    @Override
-    public List<Surface> children() {
-        return Collections.unmodifiableList(surfaces);
-    }
-
+public class Group extends GroupShape {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         Ray closestSoFar = new Ray(ray.origin, ray.direction, 1e-3, Double.POSITIVE_INFINITY);

@@ -1,24 +1,10 @@
 package ray.surface;
 
-import java.util.ArrayList;
-import java.util.Collections;
-import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 
 /** Ray Tracing in One Weekend's hittable_list: a temporary record, its fields copied into out on each closer hit. */
-public class Group extends Surface {
-    private final List<Surface> surfaces = new ArrayList<>();
-
-    public void addSurface(Surface surface) {
-        surfaces.add(surface);
-    }
-
-    @Override
-    public List<Surface> children() {
-        return Collections.unmodifiableList(surfaces);
-    }
-
+public class Group extends GroupShape {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         IntersectionRecord temp = new IntersectionRecord();
