@@ -7,7 +7,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
-import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -17,14 +16,13 @@ import ray.accuracy.SceneStudy;
 import ray.accuracy.Sweeps;
 import ray.render.PixelWindow;
 import ray.scene.Scene;
-import ray.scene.SceneException;
 
 /** {@code ray1 accuracy}: the accuracy–cost study of scenes, written as a report (DIR/index.html). */
 @Command(name = "accuracy", mixinStandardHelpOptions = true,
         description = {"Renders each scene over sweeps of samples per pixel (grid and jittered), secondary-ray offsets and, in "
             + "the instructor's copy, float vs double and textbook vs robust intersection; measures time and error against a "
             + "converged reference on a window of the image; writes DIR/index.html with tables, plots and image strips."})
-public final class AccuracyCommand implements Callable<Integer> {
+public final class AccuracyCommand extends ManyScenesCommand {
     @Option(names = {"-o", "--output"}, paramLabel = "DIR", description = "Report folder (default: ${DEFAULT-VALUE}).")
     Path output = Path.of("build/accuracy");
 
@@ -52,23 +50,12 @@ public final class AccuracyCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "Do not print a line per measured setting.")
     boolean quiet;
 
-    @CommandLine.Mixin
-    Verbosity verbosity;
-
-    @CommandLine.Mixin
-    SceneArguments scenes;
-
-    @CommandLine.Spec
-    CommandLine.Model.CommandSpec spec;
-
     @Override
     public Integer call() throws IOException {
         PixelWindow part = checkOptions();
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
-        String outputProblem = OptionChecks.outputFolderProblem(output, "write the report somewhere else, e.g. -o build/accuracy");
-        if (outputProblem != null) {
-            err.println("error: " + outputProblem);
+        PrintWriter out = out();
+        PrintWriter err = err();
+        if (!outputUsable(output, "write the report somewhere else, e.g. -o build/accuracy")) {
             return 1;
         }
         List<Path> files = scenes.files(err);
@@ -83,26 +70,16 @@ public final class AccuracyCommand implements Callable<Integer> {
                     }
                 });
         List<SceneStudy> studies = new ArrayList<>();
-        int failures = 0;
-        for (Path file : files) {
-            try {
-                Scene scene = SceneWarnings.load(file, err);
-                if (part != null && !part.fitsIn(scene.getWidth(), scene.getHeight())) {
-                    err.println("error: " + file + ": the window " + part + " does not fit in its " + scene.getWidth() + "x"
-                            + scene.getHeight() + " image");
-                    failures++;
-                    continue;
-                }
-                studies.add(study.study(scene));
-            } catch (SceneException e) {
-                err.println("error: " + e.getMessage());
-                failures++;
-            } catch (RuntimeException e) {
-                verbosity.report(err, file.toString(), e);
-                failures++;
+        int failures = eachScene(files, file -> {
+            Scene scene = SceneWarnings.load(file, err);
+            if (part != null && !part.fitsIn(scene.getWidth(), scene.getHeight())) {
+                err.println("error: " + file + ": the window " + part + " does not fit in its " + scene.getWidth() + "x"
+                        + scene.getHeight() + " image");
+                return false;
             }
-            err.flush();
-        }
+            studies.add(study.study(scene));
+            return true;
+        });
         if (!studies.isEmpty()) {
             ReportWriter.write(studies, output, "ray1 " + String.join(" ", spec.commandLine().getParseResult().originalArgs()));
             out.println("report: " + output.resolve("index.html") + " (" + studies.size() + " scene" + (studies.size() == 1 ? "" : "s") + ")");

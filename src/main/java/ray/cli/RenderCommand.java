@@ -8,7 +8,6 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -20,7 +19,6 @@ import ray.render.Renderer;
 import ray.render.SamplePattern;
 import ray.render.TaskProbes;
 import ray.scene.Scene;
-import ray.scene.SceneException;
 import ray.scene.SceneFiles;
 
 /**
@@ -31,7 +29,7 @@ import ray.scene.SceneFiles;
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = {"Renders each scene (a folder means every *.xml in it, recursively) to DIR/<scene-name>.png.",
                 "While any task is still the handout's stub, the run ends with a line naming those tasks and where to start."})
-public final class RenderCommand implements Callable<Integer> {
+public final class RenderCommand extends ManyScenesCommand {
     /**
      * The file that marks a folder of reference renders (scenes/reference, written by the
      * instructor's {@code gradle references}). {@code ray1 render} refuses to write there, so a
@@ -79,29 +77,15 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--stats", paramLabel = "FILE.json", description = "Also write the figures as JSON to this file.")
     Path statsFile;
 
-    @CommandLine.Mixin
-    Verbosity verbosity;
-
-    @CommandLine.Mixin
-    SceneArguments scenes;
-
-    @CommandLine.Spec
-    CommandLine.Model.CommandSpec spec;
-
     @Override
     public Integer call() throws IOException {
         OptionChecks.samples(spec.commandLine(), "--samples", samples);
         OptionChecks.atLeastOne(spec.commandLine(), "--threads", threads);
         ray.accel.Acceleration acceleration = OptionChecks.acceleration(spec.commandLine(), "--accel", accel);
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
-        String outputProblem = OptionChecks.outputFolderProblem(output, "render somewhere else, e.g. -o out");
+        PrintWriter out = out();
+        PrintWriter err = err();
         Path folder = cameraRays ? output.resolve(CAMERA_RAYS_FOLDER) : output;
-        if (outputProblem == null && cameraRays) {
-            outputProblem = OptionChecks.outputFolderProblem(folder, "render somewhere else, e.g. -o out");
-        }
-        if (outputProblem != null) {
-            err.println("error: " + outputProblem);
+        if (!outputUsable(output, "render somewhere else, e.g. -o out") || !outputUsable(folder, "render somewhere else, e.g. -o out")) {
             return 1;
         }
         List<Path> files = scenes.files(err);
@@ -110,32 +94,21 @@ public final class RenderCommand implements Callable<Integer> {
         }
         List<SceneStats> stats = new ArrayList<>();
         Map<String, Path> written = new HashMap<>();
-        int failures = 0;
-        for (Path file : files) {
+        int failures = eachScene(files, file -> {
             String name = SceneFiles.nameOf(file);
             Path previous = written.putIfAbsent(name, file);
             if (previous != null) {
                 err.println("error: " + file + ": renders to " + folder.resolve(name + ".png") + ", as " + previous + " does; rename one");
-                failures++;
-                continue;
+                return false;
             }
-            try {
-                Scene scene = SceneWarnings.load(file, err);
-                if (cameraRays) {
-                    writeCameraRays(scene, folder.resolve(name + ".png"), name, out);
-                } else {
-                    stats.add(render(scene, name, acceleration, out, err));
-                }
-            } catch (SceneException e) {
-                err.println("error: " + e.getMessage());
-                failures++;
-            } catch (IOException | RuntimeException e) {
-                verbosity.report(err, file.toString(), e);
-                failures++;
+            Scene scene = SceneWarnings.load(file, err);
+            if (cameraRays) {
+                writeCameraRays(scene, folder.resolve(name + ".png"), name, out);
+            } else {
+                stats.add(render(scene, name, acceleration, out, err));
             }
-            out.flush();
-            err.flush();
-        }
+            return true;
+        });
         if (statsFile != null) {
             SceneStats.writeJson(stats, statsFile);
         }
