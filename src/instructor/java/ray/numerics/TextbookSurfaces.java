@@ -1,14 +1,15 @@
 package ray.numerics;
 
+import java.util.List;
 import java.util.function.Function;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.math.Affine;
 import ray.surface.Group;
 import ray.surface.Sphere;
 import ray.surface.Surface;
 import ray.surface.Transformed;
 import ray.surface.Triangle;
-import ray.surface.TriangleSet;
 
 /**
  * Scenes whose spheres or triangles intersect by a textbook method ({@link TextbookSphere},
@@ -40,22 +41,23 @@ public final class TextbookSurfaces {
         return new TextbookSphereOf(sphere);
     }
 
+    /**
+     * A copy of the tree with {@code leaf} applied to every primitive. A surface made of parts (a
+     * group, a box's or a mesh's triangles, a placement's one surface) becomes its parts, replaced,
+     * in a plain group (so a mesh is searched by a linear loop here, which changes the time, not the
+     * image), placed as the surface placed them.
+     */
     static Surface replaceLeaves(Surface surface, Function<Surface, Surface> leaf) {
-        if (surface instanceof Transformed) {
-            Transformed t = (Transformed) surface;
-            return new Transformed(replaceLeaves(t.children().get(0), leaf), t.toWorld());
+        List<Surface> parts = surface.children();
+        if (parts.isEmpty()) {
+            return leaf.apply(surface);
         }
-        if (surface instanceof Group || surface instanceof TriangleSet) {
-            // Any group, and a box's or a mesh's triangles: its children in a plain group (so a
-            // mesh is searched by a linear loop here, which changes the time, not the image). A
-            // group's own transform is not in the group but in the Transformed around it, kept above.
-            Group copy = new Group();
-            for (Surface child : surface.children()) {
-                copy.addSurface(replaceLeaves(child, leaf));
-            }
-            return copy;
+        Group copy = new Group();
+        for (Surface part : parts) {
+            copy.addSurface(replaceLeaves(part, leaf));
         }
-        return leaf.apply(surface);
+        Affine placement = surface.childPlacement();
+        return placement.isIdentity() ? copy : new Transformed(copy, placement);
     }
 
     /** A triangle tested by another method; the hit names the triangle itself, so its shader and offsets apply. */

@@ -1,51 +1,24 @@
 package ray.shading;
 
-import static ray.shading.TextureLookups.assertLookup;
 import static ray.shading.TextureLookups.assertTexel;
-import static ray.shading.TextureLookups.nearEachTexelCenter;
 
-import org.junit.Rule;
 import org.junit.Test;
-import ray.image.Image;
 import ray.testing.Points;
 import ray.testing.StudentTask;
-import ray.testing.StudentTaskRule;
 
 /**
  * Checks ClampTexture.getTexColor on a 4×3 image of distinct texels: column (int)(u·W + ½) and row
  * (int)((1 − v)·H + ½) from the top, clamped to the image, so beyond [0, 1] the edge texels extend.
  * General points inside are at least 0.2 of a texel from an edge between texels; the edge cases are
- * hand-computed.
+ * hand-computed. What it does inside the image, as RepeatTexture does: {@link TextureLookupCases}.
  */
 @Points(value = 1, task = StudentTask.TEXTURE)
-public class ClampTextureTest {
-    @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TEXTURE);
-
-    private static final int W = 4;
-    private static final int H = 3;
+public class ClampTextureTest extends TextureLookupCases {
     private static final String RULE = "the texel is column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5) counted from the"
             + " top (Math.floor instead of (int) is accepted too), each clamped to 0…W−1 and 0…H−1, read with texel(column, row)";
-    private final Image image = TextureLookups.distinctTexels(W, H);
-    private final ClampTexture texture = new ClampTexture(image);
 
-    private void check(double u, double v) {
-        assertLookup(RULE, texture, W, H, u, v, i -> Math.max(0, Math.min(W - 1, i)), r -> Math.max(0, Math.min(H - 1, r)));
-    }
-
-    @Test
-    @Points(value = 2, task = StudentTask.TEXTURE)
-    public void eachTexelIsReadNearItsCenter() {
-        // Texel (column, row)'s center is at u = column/W, v = 1 − row/H; ±0.3 of a texel still reads it.
-        nearEachTexelCenter(W, H, this::check);
-    }
-
-    @Test
-    public void rowsCountFromTheTopAndVFromTheBottom() {
-        assertTexel(RULE, texture, W, H, 0.0, 1.0, 0, 0); // v = 1: row 0, the top-left texel
-        assertTexel(RULE, texture, W, H, 0.75, 1.0, 3, 0);
-        check(0.0, 1 / 3.0); // row 2, the bottom row
-        check(0.5, 2 / 3.0);
+    public ClampTextureTest() {
+        super(RULE, ClampTexture::new, i -> Math.max(0, Math.min(W - 1, i)), r -> Math.max(0, Math.min(H - 1, r)));
     }
 
     /**
@@ -58,13 +31,6 @@ public class ClampTextureTest {
         assertTexel(RULE, texture, W, H, 0.0, 0.0, 0, 2);
         assertTexel(RULE, texture, W, H, 1.0, 0.0, 3, 2);
         assertTexel(RULE, texture, W, H, 1.0, 1.0, 3, 0);
-    }
-
-    /** Exactly on the edges between texels, as in RepeatTextureTest: flip v, then round. */
-    @Test
-    public void onATexelEdgeTheCourseFlipsVBeforeRounding() {
-        assertTexel(RULE + "; v = 0.5 lies on the edge between rows 1 and 2, and (int)((1 − 0.5)·3 + 0.5) = 2 (flip v, then"
-                + " round), not H − (int)(0.5·3 + 0.5) = 1 (round, then flip)", texture, W, H, 0.375, 0.5, 2, 2);
     }
 
     @Test

@@ -1,15 +1,10 @@
 package ray.shading;
 
-import static ray.shading.TextureLookups.assertLookup;
 import static ray.shading.TextureLookups.assertTexel;
-import static ray.shading.TextureLookups.nearEachTexelCenter;
 
-import org.junit.Rule;
 import org.junit.Test;
-import ray.image.Image;
 import ray.testing.Points;
 import ray.testing.StudentTask;
-import ray.testing.StudentTaskRule;
 
 /**
  * Checks RepeatTexture.getTexColor on a 4×3 image of distinct texels: column (int)(u·W + ½) and row
@@ -18,35 +13,13 @@ import ray.testing.StudentTaskRule;
  * texels (see {@link TextureLookups} on what is accepted where); the edge cases are hand-computed.
  */
 @Points(value = 1, task = StudentTask.TEXTURE)
-public class RepeatTextureTest {
-    @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TEXTURE);
-
-    private static final int W = 4;
-    private static final int H = 3;
+public class RepeatTextureTest extends TextureLookupCases {
     private static final String RULE = "the texel is column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5) counted from the"
             + " top (Math.floor instead of (int) is accepted too), each wrapped into 0…W−1 and 0…H−1 (Math.floorMod), read with"
             + " texel(column, row)";
-    private final Image image = TextureLookups.distinctTexels(W, H);
-    private final RepeatTexture texture = new RepeatTexture(image);
 
-    private void check(double u, double v) {
-        assertLookup(RULE, texture, W, H, u, v, i -> Math.floorMod(i, W), r -> Math.floorMod(r, H));
-    }
-
-    @Test
-    @Points(value = 2, task = StudentTask.TEXTURE)
-    public void eachTexelIsReadNearItsCenter() {
-        // Texel (column, row)'s center is at u = column/W, v = 1 − row/H; ±0.3 of a texel still reads it.
-        nearEachTexelCenter(W, H, this::check);
-    }
-
-    @Test
-    public void rowsCountFromTheTopAndVFromTheBottom() {
-        assertTexel(RULE, texture, W, H, 0.0, 1.0, 0, 0); // v = 1: (int)(0·3 + 0.5) = row 0, the top-left texel
-        assertTexel(RULE, texture, W, H, 0.75, 1.0, 3, 0); // the top-right texel
-        check(0.0, 1 / 3.0); // (int)((2/3)·3 + 0.5) = (int) 2.5: row 2, the bottom row
-        check(0.5, 2 / 3.0); // (int)(1 + 0.5): column 2, row 1
+    public RepeatTextureTest() {
+        super(RULE, RepeatTexture::new, i -> Math.floorMod(i, W), r -> Math.floorMod(r, H));
     }
 
     /**
@@ -63,18 +36,11 @@ public class RepeatTextureTest {
         assertTexel(RULE, texture, W, H, 1.0, 1.0, 0, 0);
     }
 
-    /**
-     * Exactly on the edges between texels, where two ways of rounding part: u = 0.375 makes
-     * u·4 + 0.5 = 2 and v = 0.5 makes (1 − v)·3 + 0.5 = 2, both exact in binary. The course takes
-     * column 2 and row 2, the lower of the two rows the edge separates, because it turns v into
-     * 1 − v before rounding. Rounding v·3 + 0.5 = 2 first and flipping to H − 2 gives row 1: that
-     * agrees everywhere but on such edges, where the reference images differ (a mesh whose vt sit on
-     * texel edges shows it).
-     */
+    /** On a texel edge beyond the image too, the course flips v before rounding, then wraps. */
+    @Override
     @Test
     public void onATexelEdgeTheCourseFlipsVBeforeRounding() {
-        assertTexel(RULE + "; v = 0.5 lies on the edge between rows 1 and 2, and (int)((1 − 0.5)·3 + 0.5) = 2 (flip v, then"
-                + " round), not H − (int)(0.5·3 + 0.5) = 1 (round, then flip)", texture, W, H, 0.375, 0.5, 2, 2);
+        super.onATexelEdgeTheCourseFlipsVBeforeRounding();
         assertTexel(RULE, texture, W, H, 1.375, -0.5, 2, 2);
     }
 

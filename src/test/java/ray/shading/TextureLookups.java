@@ -70,10 +70,6 @@ final class TextureLookups {
     }
 
     /**
-     * Checks texture.getTexColor(u, v) on a distinctTexels(W, H) image: it must be texel (column, row)
-     * for some column in {@code fixColumn(columns(u, W))} and row in {@code fixRow(rows(v, H))}.
-     */
-    /**
      * Calls {@code check(u, v)} at every texel's center (u = column/W, v = 1 − row/H) and ±0.3 of a
      * texel around it in u and v, which still reads that texel.
      */
@@ -89,6 +85,10 @@ final class TextureLookups {
         }
     }
 
+    /**
+     * Checks texture.getTexColor(u, v) on a distinctTexels(W, H) image: it must be texel (column, row)
+     * for some column in {@code fixColumn(columns(u, W))} and row in {@code fixRow(rows(v, H))}.
+     */
     static void assertLookup(String rule, Texture texture, int width, int height, double u, double v,
             IntUnaryOperator fixColumn, IntUnaryOperator fixRow) {
         StringBuilder expected = new StringBuilder();
