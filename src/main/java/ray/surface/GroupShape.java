@@ -12,12 +12,13 @@ import ray.math.Vec3;
 /**
  * A group's data and everything about it but the closest-hit search, which the student's
  * {@link Group} adds: its surfaces in the scene's order, and the copies the framework makes of it
- * (moved to the camera's frame, counted for a renderer thread), which keep the student's class and
- * so the student's loop.
+ * (moved to the camera's frame, counted for a renderer thread). A copy is a new group of the same
+ * class, made by its no-argument constructor, so it searches with the student's loop and starts
+ * from none of the original's state (a list the student's loop might have cached).
  */
 public abstract class GroupShape extends Surface {
-    /** The group's surfaces in the scene's order (a copy gets a list of its own). */
-    protected List<Surface> surfaces = new ArrayList<>();
+    /** The group's surfaces in the scene's order. */
+    protected final List<Surface> surfaces = new ArrayList<>();
 
     public void addSurface(Surface surface) {
         surfaces.add(surface);
@@ -57,7 +58,8 @@ public abstract class GroupShape extends Surface {
         for (Surface part : surfaces) {
             moved.add(part.inFrameAt(origin));
         }
-        return withParts(moved);
+        GroupShape copy = emptyCopy();
+        return copy == null ? super.inFrameAt(origin) : copy.holding(moved);
     }
 
     /** The same group over the parts' counted copies: the student's loop still finds the closest hit. */
@@ -67,13 +69,29 @@ public abstract class GroupShape extends Surface {
         for (Surface part : surfaces) {
             counted.add(part.searchCopy(acceleration, counter));
         }
-        return withParts(counted);
+        GroupShape copy = emptyCopy();
+        return copy == null ? super.searchCopy(acceleration, counter) : copy.holding(counted);
     }
 
-    private GroupShape withParts(List<Surface> parts) {
-        GroupShape copy = (GroupShape) copy();
-        copy.surfaces = parts;
+    /**
+     * A new, empty group of this class with this group's shader, or null when the class cannot be
+     * made that way (no public no-argument constructor: an anonymous subclass in a test), whose
+     * copies are then made as any other surface's.
+     */
+    private GroupShape emptyCopy() {
+        GroupShape copy;
+        try {
+            copy = getClass().getConstructor().newInstance();
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            return null;
+        }
+        copy.setShader(getShader());
         return copy;
+    }
+
+    private GroupShape holding(List<Surface> parts) {
+        parts.forEach(this::addSurface);
+        return this;
     }
 
     @Override
