@@ -99,9 +99,11 @@ public final class TaskProbes {
         try {
             switch (part) {
                 case PERSPECTIVE_CAMERA:
-                    return camera(new PerspectiveCamera());
+                    // The upper-right corner's ray: from the eye through (1, 1, −1) on the plane one unit away.
+                    return camera(new PerspectiveCamera(), Vec3.ZERO, new Vec3(1, 1, -1));
                 case ORTHOGRAPHIC_CAMERA:
-                    return camera(new OrthographicCamera());
+                    // The upper-right corner's ray: from that corner of the view, (1, 1, 0), straight ahead.
+                    return camera(new OrthographicCamera(), new Vec3(1, 1, 0), new Vec3(0, 0, -1));
                 case SPHERE:
                     return sphere();
                 case TRIANGLE:
@@ -229,9 +231,10 @@ public final class TaskProbes {
     /**
      * A camera at the origin looking along −z with a 2 × 2 image plane (1 unit away): the ray through
      * the center must look along −z from the origin, and the one through the upper-right corner up and
-     * to the right. The stub's rays (start = end) cannot reach anything.
+     * to the right, from {@code cornerOrigin} along {@code cornerDirection}. The stub's rays
+     * (start = end) cannot reach anything.
      */
-    private static Finding camera(Camera camera) {
+    private static Finding camera(Camera camera, Vec3 cornerOrigin, Vec3 cornerDirection) {
         String name = camera.getClass().getSimpleName() + ".generateRay";
         camera.setViewWidth(2);
         camera.setViewHeight(2);
@@ -249,12 +252,9 @@ public final class TaskProbes {
             problem = emptyRayProblem(name, corner);
         }
         if (problem == null) {
-            boolean orthographic = camera instanceof OrthographicCamera;
-            Vec3 origin = orthographic ? new Vec3(1, 1, 0) : Vec3.ZERO;
-            Vec3 direction = orthographic ? new Vec3(0, 0, -1) : new Vec3(1, 1, -1);
-            if (!close(corner.origin, origin) || !sameDirection(corner.direction, direction)) {
+            if (!close(corner.origin, cornerOrigin) || !sameDirection(corner.direction, cornerDirection)) {
                 problem = name + "(1, 1), the upper-right corner of a 2 × 2 image plane, returned origin " + corner.origin
-                        + ", direction " + corner.direction + "; expected origin " + origin + " and a direction along " + direction;
+                        + ", direction " + corner.direction + "; expected origin " + cornerOrigin + " and a direction along " + cornerDirection;
             }
         }
         return new Finding(stub, problem);
