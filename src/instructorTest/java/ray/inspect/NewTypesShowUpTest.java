@@ -167,6 +167,19 @@ public class NewTypesShowUpTest {
         assertEquals("[2.0,3.0,4.0]", drawn.get("max").toString());
     }
 
+    /**
+     * cylinder.xml, pixel (250, 120): the ray meets the lying cylinder, the one part of a rotated
+     * group. The explore page sums up that group as one primitive, not as a triangle.
+     */
+    @Test
+    public void aGroupOfOneCylinderIsSummedUpAsOnePrimitive() throws Exception {
+        Scene scene = ray.scene.SceneLoader.load(java.nio.file.Path.of("scenes/cylinder.xml"));
+        JsonArray hits = new PixelStory(scene, "cylinder").of(250, 120, null, null).getAsJsonArray("hits");
+        JsonObject group = hits.get(3).getAsJsonObject();
+        assertEquals(hits.toString(), "1 primitive: 1 hit (nearest t = 6.11785 at #1, at (1.73021, 0.953408, 0.510764)  ← nearest), 0 miss",
+                group.get("summary").getAsString());
+    }
+
     /** A 1×1 orthographic view from z = 5 straight down −z, onto {@code surface} shaded by {@code shader}. */
     private static Scene oneRayScene(Surface surface, Shader shader) {
         OrthographicCamera camera = new OrthographicCamera();

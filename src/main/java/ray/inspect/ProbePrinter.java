@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import ray.surface.Surface;
+import ray.surface.SurfaceKind;
 
 /**
  * Prints a {@link ProbeTree} as an indented list, one line per surface: groups with their
@@ -90,7 +91,10 @@ final class ProbePrinter {
         return "hit  t = " + Fmt.num(p.t()) + "  at " + Fmt.vec(p.worldLocation()) + (p == nearest ? "  ← nearest" : "");
     }
 
-    /** "12 triangles: 2 hit (nearest t = … at triangle #3, at (…)), 10 miss": a group of primitives in one line. */
+    /**
+     * "12 triangles: 2 hit (nearest t = … at triangle #3, at (…)), 10 miss": a group of primitives in
+     * one line ("1 primitive: …" when they are not all triangles).
+     */
     static String summary(ProbeNode group, ProbeNode nearest) {
         int hits = 0;
         int failures = 0;
@@ -106,7 +110,9 @@ final class ProbePrinter {
             }
         }
         int n = group.children.size();
-        StringBuilder s = new StringBuilder(Fmt.count(n, "triangle")).append(": ").append(hits).append(" hit");
+        // A mesh's or box's parts are triangles; a group's may be anything.
+        boolean triangles = group.children.stream().allMatch(c -> c.surface.kind() == SurfaceKind.TRIANGLE);
+        StringBuilder s = new StringBuilder(Fmt.count(n, triangles ? "triangle" : "primitive")).append(": ").append(hits).append(" hit");
         if (best != null) {
             s.append(" (nearest t = ").append(Fmt.num(best.t())).append(" at ").append(partName(group.surface, best))
                     .append(", at ").append(Fmt.vec(best.worldLocation())).append(best == nearest ? "  ← nearest" : "")
