@@ -56,14 +56,7 @@ public class SceneLoaderErrorsTest {
                 row("unknown element far from any name lists the expected ones", body("  <sphere/>\n"), 4, 12,
                         "unknown element <sphere> in <scene>;"
                                 + " expected one of backColor, camera, exposure, image, light, samples, shader, surface, texture"),
-                row("property of the other camera type is unknown", """
-                        <scene>
-                          <camera type="OrthographicCamera">
-                            <projDistance>2</projDistance>
-                          </camera>
-                          <image>4 3</image>
-                        </scene>
-                        """, 3, 19, "unknown element <projDistance> in an OrthographicCamera;"
+                row("property of the other camera type is unknown", camera("OrthographicCamera", "<projDistance>2</projDistance>"), 3, 19, "unknown element <projDistance> in an OrthographicCamera;"
                                 + " expected one of viewDir, viewHeight, viewPoint, viewUp, viewWidth"),
                 row("misspelled type suggests the closest one", body("""
                           <surface type="Sphre">
@@ -269,47 +262,12 @@ public class SceneLoaderErrorsTest {
                 row("zero samples is invalid", body("  <samples>0</samples>\n"), 4, 12, "samples is 0; expected a positive integer"),
                 row("negative samples is invalid", body("  <samples>-2</samples>\n"), 4, 12, "samples is -2; expected a positive integer"),
                 row("negative exposure is invalid", body("  <exposure>-0.5</exposure>\n"), 4, 13, "exposure is -0.5; expected a number ≥ 0"),
-                row("zero viewWidth is invalid", """
-                        <scene>
-                          <camera type="PerspectiveCamera">
-                            <viewWidth>0</viewWidth>
-                          </camera>
-                          <image>4 3</image>
-                        </scene>
-                        """, 3, 16, "viewWidth is 0.0; expected a positive number"),
-                row("zero viewHeight is invalid", """
-                        <scene>
-                          <camera type="OrthographicCamera">
-                            <viewHeight>0</viewHeight>
-                          </camera>
-                          <image>4 3</image>
-                        </scene>
-                        """, 3, 17, "viewHeight is 0.0; expected a positive number"),
-                row("zero projDistance is invalid", """
-                        <scene>
-                          <camera type="PerspectiveCamera">
-                            <projDistance>0</projDistance>
-                          </camera>
-                          <image>4 3</image>
-                        </scene>
-                        """, 3, 19, "projDistance is 0.0; expected a positive number"),
-                row("negative projDistance is invalid", """
-                        <scene>
-                          <camera type="PerspectiveCamera">
-                            <projDistance>-1.5</projDistance>
-                          </camera>
-                          <image>4 3</image>
-                        </scene>
-                        """, 3, 19, "projDistance is -1.5; expected a positive number"),
+                row("zero viewWidth is invalid", camera("PerspectiveCamera", "<viewWidth>0</viewWidth>"), 3, 16, "viewWidth is 0.0; expected a positive number"),
+                row("zero viewHeight is invalid", camera("OrthographicCamera", "<viewHeight>0</viewHeight>"), 3, 17, "viewHeight is 0.0; expected a positive number"),
+                row("zero projDistance is invalid", camera("PerspectiveCamera", "<projDistance>0</projDistance>"), 3, 19, "projDistance is 0.0; expected a positive number"),
+                row("negative projDistance is invalid", camera("PerspectiveCamera", "<projDistance>-1.5</projDistance>"), 3, 19, "projDistance is -1.5; expected a positive number"),
                 // The axes are checked once the whole camera is read, so the error points at <camera>.
-                row("zero viewDir is reported at its camera", """
-                        <scene>
-                          <camera type="PerspectiveCamera">
-                            <viewDir>0 0 0</viewDir>
-                          </camera>
-                          <image>4 3</image>
-                        </scene>
-                        """, 2, 36, "invalid PerspectiveCamera: viewDir is (0.0, 0.0, 0.0); expected a nonzero vector"),
+                row("zero viewDir is reported at its camera", camera("PerspectiveCamera", "<viewDir>0 0 0</viewDir>"), 2, 36, "invalid PerspectiveCamera: viewDir is (0.0, 0.0, 0.0); expected a nonzero vector"),
                 row("viewUp parallel to viewDir is reported at its camera", """
                         <scene>
                           <camera type="OrthographicCamera">
@@ -320,14 +278,7 @@ public class SceneLoaderErrorsTest {
                         </scene>
                         """, 2, 37, "invalid OrthographicCamera: viewUp (0.0, 0.0, 2.0) is parallel to"
                                 + " viewDir (0.0, 0.0, -1.0); expected a viewUp that is not parallel to viewDir"),
-                row("zero viewUp is reported at its camera", """
-                        <scene>
-                          <camera type="PerspectiveCamera">
-                            <viewUp>0 0 0</viewUp>
-                          </camera>
-                          <image>4 3</image>
-                        </scene>
-                        """, 2, 36,
+                row("zero viewUp is reported at its camera", camera("PerspectiveCamera", "<viewUp>0 0 0</viewUp>"), 2, 36,
                         "invalid PerspectiveCamera: viewUp is (0.0, 0.0, 0.0); expected a nonzero vector not parallel to viewDir"),
                 row("zero scale is refused", body("""
                           <surface type="Group">
@@ -491,6 +442,11 @@ public class SceneLoaderErrorsTest {
     /** A {@link #body} of a sphere that starts on line 4 and whose line 5 is {@code line}. */
     private static String sphere(String line) {
         return body("  <surface type=\"Sphere\">\n" + line + "  </surface>\n");
+    }
+
+    /** A 4×3 scene whose camera of type {@code type} has one property, {@code property}, on line 3. */
+    private static String camera(String type, String property) {
+        return "<scene>\n  <camera type=\"" + type + "\">\n    " + property + "\n  </camera>\n  <image>4 3</image>\n</scene>\n";
     }
 
     /** Three lines: a sphere whose shader is {@code <shader ref="ref"/>}, on the second of them. */
