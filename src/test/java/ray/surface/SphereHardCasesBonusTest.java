@@ -2,6 +2,9 @@ package ray.surface;
 
 import static org.junit.Assert.assertTrue;
 import static org.junit.Assert.fail;
+import static ray.testing.RandomVectors.perpendicularUnit;
+import static ray.testing.RandomVectors.randomUnit;
+import static ray.testing.RandomVectors.randomVec;
 
 import java.math.BigDecimal;
 import java.math.MathContext;
@@ -373,31 +376,5 @@ public class SphereHardCasesBonusTest {
 
     private static Vec3 axis(int axis, double value) {
         return new Vec3(axis == 0 ? value : 0, axis == 1 ? value : 0, axis == 2 ? value : 0);
-    }
-
-    private static Vec3 randomVec(Random random, double extent) {
-        return new Vec3(extent * (2 * random.nextDouble() - 1), extent * (2 * random.nextDouble() - 1),
-                extent * (2 * random.nextDouble() - 1));
-    }
-
-    private static Vec3 randomUnit(Random random) {
-        while (true) {
-            Vec3 v = randomVec(random, 1);
-            double l2 = v.lengthSquared();
-            if (l2 > 0.01 && l2 <= 1) {
-                return v.normalized();
-            }
-        }
-    }
-
-    /** A random unit vector perpendicular to the unit vector u. */
-    private static Vec3 perpendicularUnit(Vec3 u, Random random) {
-        while (true) {
-            Vec3 w = randomUnit(random);
-            Vec3 across = w.minus(u.times(w.dot(u)));
-            if (across.lengthSquared() > 0.01) {
-                return across.normalized();
-            }
-        }
     }
 }

@@ -3,6 +3,8 @@ package ray.surface;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertSame;
 import static ray.surface.HitAsserts.assertHitAt;
+import static ray.testing.RandomVectors.randomInBall;
+import static ray.testing.RandomVectors.randomVec;
 
 import java.math.BigDecimal;
 import java.math.MathContext;
@@ -92,19 +94,5 @@ public class SphereRandomTest {
 
     private static BigDecimal dot(BigDecimal[] a, BigDecimal[] b) {
         return a[0].multiply(b[0]).add(a[1].multiply(b[1])).add(a[2].multiply(b[2]));
-    }
-
-    private static Vec3 randomVec(Random random, double extent) {
-        return new Vec3(extent * (2 * random.nextDouble() - 1), extent * (2 * random.nextDouble() - 1),
-                extent * (2 * random.nextDouble() - 1));
-    }
-
-    private static Vec3 randomInBall(Random random, double radius) {
-        while (true) {
-            Vec3 p = randomVec(random, 1);
-            if (p.lengthSquared() <= 1) {
-                return p.times(radius);
-            }
-        }
     }
 }

@@ -1,6 +1,9 @@
 package ray.surface;
 
 import static org.junit.Assert.fail;
+import static ray.testing.RandomVectors.randomInBall;
+import static ray.testing.RandomVectors.randomUnit;
+import static ray.testing.RandomVectors.randomVec;
 
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -343,29 +346,5 @@ public class TriangleHardCasesBonusTest {
     private static Vec3 integerPoint(Random random, int extent) {
         return new Vec3(random.nextInt(2 * extent + 1) - extent, random.nextInt(2 * extent + 1) - extent,
                 random.nextInt(2 * extent + 1) - extent);
-    }
-
-    private static Vec3 randomVec(Random random, double extent) {
-        return new Vec3(extent * (2 * random.nextDouble() - 1), extent * (2 * random.nextDouble() - 1),
-                extent * (2 * random.nextDouble() - 1));
-    }
-
-    private static Vec3 randomInBall(Random random, double radius) {
-        while (true) {
-            Vec3 v = randomVec(random, 1);
-            if (v.lengthSquared() <= 1) {
-                return v.times(radius);
-            }
-        }
-    }
-
-    private static Vec3 randomUnit(Random random) {
-        while (true) {
-            Vec3 v = randomVec(random, 1);
-            double l2 = v.lengthSquared();
-            if (l2 > 0.01 && l2 <= 1) {
-                return v.normalized();
-            }
-        }
     }
 }

@@ -4,6 +4,7 @@ import static org.junit.Assert.assertSame;
 import static ray.surface.HitAsserts.assertHit;
 import static ray.surface.HitAsserts.assertT;
 import static ray.testing.Asserts.assertVec;
+import static ray.testing.RandomVectors.randomVec;
 
 import java.util.Random;
 import org.junit.Rule;
@@ -60,10 +61,5 @@ public class TriangleRandomTest {
             assertVec(what + ": the normal of a triangle without vertex normals is its face normal",
                     triangle.getFaceNormal(), out.normal, 1e-14);
         }
-    }
-
-    private static Vec3 randomVec(Random random, double extent) {
-        return new Vec3(extent * (2 * random.nextDouble() - 1), extent * (2 * random.nextDouble() - 1),
-                extent * (2 * random.nextDouble() - 1));
     }
 }
