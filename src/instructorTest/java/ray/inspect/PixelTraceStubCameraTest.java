@@ -7,14 +7,11 @@ import static ray.testing.Asserts.v;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
-
 import org.junit.Test;
-import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.PerspectiveCamera;
 import ray.math.Vec3;
 import ray.scene.Scene;
-import ray.surface.Surface;
 
 /**
  * The trace explains a camera that cannot see anything (the handout's stub returns an empty
@@ -28,26 +25,6 @@ public class PixelTraceStubCameraTest {
         @Override
         public Ray generateRay(double imageU, double imageV) {
             return new Ray(viewPoint, w.negate(), 0, 0);
-        }
-    }
-
-    /** A surface hit at t = 1 by any ray whose segment contains 1, as the intersect contract says. */
-    private static final class Wall extends Surface {
-        @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
-            if (!(ray.start < 1 && 1 < ray.end)) {
-                return false;
-            }
-            out.t = 1;
-            out.location = ray.pointAt(1);
-            out.normal = v(0, 0, 1);
-            out.surface = this;
-            return true;
-        }
-
-        @Override
-        public String toString() {
-            return "Wall";
         }
     }
 
@@ -89,7 +66,7 @@ public class PixelTraceStubCameraTest {
         scene.setCamera(completed(new StubCamera()));
         scene.setImage(3, 3);
         scene.setBackColor(v(0.25, 0.5, 0.75));
-        scene.addSurface(new Wall());
+        scene.addSurface(new Wall(v(0, 0, 1)));
         scene.complete();
         StringWriter text = new StringWriter();
         int[] rgb;

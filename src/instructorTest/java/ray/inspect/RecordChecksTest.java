@@ -26,32 +26,6 @@ import ray.surface.Surface;
  * student's wrong sphere render that the trace showed without saying so.
  */
 public class RecordChecksTest {
-    /** A wall hit at t = 1 by any ray whose segment holds 1, with the given normal. */
-    private static final class Wall extends Surface {
-        private final Vec3 normal;
-
-        Wall(Vec3 normal) {
-            this.normal = normal;
-        }
-
-        @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
-            if (!(ray.start < 1 && 1 < ray.end)) {
-                return false;
-            }
-            out.t = 1;
-            out.location = ray.pointAt(1);
-            out.normal = normal;
-            out.surface = this;
-            return true;
-        }
-
-        @Override
-        public String toString() {
-            return "Wall";
-        }
-    }
-
     /** Reports a hit at t = −2 on any ray heading toward +z (a shadow ray here), ignoring the segment; misses the rest. */
     private static final class IgnoresStart extends Surface {
         @Override

@@ -85,7 +85,9 @@ public final class RenderCommand extends ManyScenesCommand {
         PrintWriter out = out();
         PrintWriter err = err();
         Path folder = cameraRays ? output.resolve(CAMERA_RAYS_FOLDER) : output;
-        if (!outputUsable(output, "render somewhere else, e.g. -o out") || !outputUsable(folder, "render somewhere else, e.g. -o out")) {
+        // The camera-ray pictures go to a folder of their own, which must be usable too.
+        if (!outputUsable(output, "render somewhere else, e.g. -o out")
+                || cameraRays && !outputUsable(folder, "render somewhere else, e.g. -o out")) {
             return 1;
         }
         List<Path> files = scenes.files(err);

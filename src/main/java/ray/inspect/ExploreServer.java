@@ -15,7 +15,6 @@ import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import ray.scene.SceneException;
-import ray.inspect.Failure;
 
 /**
  * The explore page's web server, on the loopback address only (the JDK's

@@ -22,10 +22,6 @@ import ray.render.SamplePattern;
 import ray.scene.Scene;
 import ray.scene.SceneFiles;
 import ray.scene.SceneLoader;
-import ray.inspect.CameraRayCheck;
-import ray.inspect.Failure;
-import ray.inspect.PixelStory;
-import ray.inspect.PixelTrace;
 
 /**
  * One scene file as the explore page sees it: loaded, rendered exactly as {@code ray1 render}

@@ -37,7 +37,7 @@ final class Fmt {
     }
 
     static String vec(Vec3 v) {
-        return v == null ? "null" : "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")";
+        return v == null ? "null" : v.format(Fmt::num);
     }
 
     static String ray(Ray ray) {

@@ -30,7 +30,7 @@ final class SceneOutline {
     static final int MAX_TRIANGLES = 4000;
 
     private final JsonArray surfaces = new JsonArray();
-    private final ray.inspect.SurfaceNames names = new ray.inspect.SurfaceNames();
+    private final SurfaceNames names = new SurfaceNames();
     private Bounds bounds = Bounds.EMPTY;
 
     private SceneOutline() {

@@ -23,12 +23,14 @@ final class ShadingReport {
     private final SurfaceNames names;
     private final RecordedShading recorded;
     private final PrintWriter out;
+    private final LightReport lightReport;
 
     ShadingReport(Scene scene, SurfaceNames names, RecordedShading recorded, PrintWriter out) {
         this.scene = scene;
         this.names = names;
         this.recorded = recorded;
         this.out = out;
+        this.lightReport = new LightReport(scene, names, recorded, out);
     }
 
     /** "Phong, kd = (…), ks = (…), p = 20", or "none". */
@@ -84,9 +86,8 @@ final class ShadingReport {
             if (lights.isEmpty()) {
                 line("The scene has no <light>, so the surface is black.");
             }
-            LightReport report = new LightReport(scene, names, recorded, out);
             for (int k = 0; k < lights.size(); k++) {
-                report.explain(k + 1, lights.get(k), shader, hit, ray, in);
+                lightReport.explain(k + 1, lights.get(k), shader, hit, ray, in);
             }
             Vec3 total = shader.shade(hit, ray, recorded, 0);
             row("L", Fmt.vec(total) + "   (the sum over the lights)");

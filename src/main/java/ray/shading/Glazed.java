@@ -67,9 +67,12 @@ public class Glazed extends Shader {
         if (depth + 1 > MAX_DEPTH || r == 0) {
             return base;
         }
-        // Mirror direction: the eye direction reflected about the normal, 2(n·e)n − e.
-        Vec3 mirror = hit.normal.times(2 * cosTheta).minus(toEye);
-        return base.plus(context.radiance(hit, mirror, depth + 1).times(r));
+        return base.plus(context.radiance(hit, mirror(hit.normal, toEye, cosTheta), depth + 1).times(r));
+    }
+
+    /** The eye direction e reflected about the normal n: 2(n·e)n − e, given n·e. */
+    private static Vec3 mirror(Vec3 normal, Vec3 toEye, double cosTheta) {
+        return normal.times(2 * cosTheta).minus(toEye);
     }
 
     @Override
@@ -88,7 +91,7 @@ public class Glazed extends Shader {
         steps.row("n·e", steps.num(cosTheta));
         // Head on (cos θ = 1) Schlick's R is R0 itself.
         steps.row("R", steps.num(r) + "   (R0 = ((n − 1)/(n + 1))² = " + steps.num(reflectance(1)) + ")");
-        Vec3 lMirror = r == 0 ? Vec3.ZERO : steps.mirror(hit, hit.normal.times(2 * cosTheta).minus(e));
+        Vec3 lMirror = r == 0 ? Vec3.ZERO : steps.mirror(hit, mirror(hit.normal, e, cosTheta));
         steps.line("The substrate, weighted by 1 − R = " + steps.num(1 - r) + ":");
         Vec3 lSubstrate = steps.part(substrate, hit, ray);
         Vec3 total = shade(hit, ray, steps.context(), 0);

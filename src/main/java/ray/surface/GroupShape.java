@@ -3,6 +3,7 @@ package ray.surface;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.function.UnaryOperator;
 import ray.Ray;
 import ray.accel.Acceleration;
 import ray.accel.SearchCounter;
@@ -54,31 +55,23 @@ public abstract class GroupShape extends Surface {
     /** The same group with every part moved, so that the student's loop searches the moved parts. */
     @Override
     public Surface inFrameAt(Vec3 origin) {
-        List<Surface> moved = new ArrayList<>();
-        for (Surface part : surfaces) {
-            moved.add(part.inFrameAt(origin));
-        }
-        GroupShape copy = emptyCopy();
-        return copy == null ? super.inFrameAt(origin) : copy.holding(moved);
+        GroupShape copy = copyOver(part -> part.inFrameAt(origin));
+        return copy != null ? copy : super.inFrameAt(origin);
     }
 
     /** The same group over the parts' counted copies: the student's loop still finds the closest hit. */
     @Override
     public Surface searchCopy(Acceleration acceleration, SearchCounter counter) {
-        List<Surface> counted = new ArrayList<>();
-        for (Surface part : surfaces) {
-            counted.add(part.searchCopy(acceleration, counter));
-        }
-        GroupShape copy = emptyCopy();
-        return copy == null ? super.searchCopy(acceleration, counter) : copy.holding(counted);
+        GroupShape copy = copyOver(part -> part.searchCopy(acceleration, counter));
+        return copy != null ? copy : super.searchCopy(acceleration, counter);
     }
 
     /**
-     * A new, empty group of this class with this group's shader, or null when the class cannot be
-     * made that way (no public no-argument constructor: an anonymous subclass in a test), whose
-     * copies are then made as any other surface's.
+     * A new group of this class with this group's shader, holding {@code copyPart} of each part in
+     * order; or null when the class cannot be made that way (no public no-argument constructor: an
+     * anonymous subclass in a test), whose copies are then made as any other surface's.
      */
-    private GroupShape emptyCopy() {
+    private GroupShape copyOver(UnaryOperator<Surface> copyPart) {
         GroupShape copy;
         try {
             copy = getClass().getConstructor().newInstance();
@@ -86,12 +79,10 @@ public abstract class GroupShape extends Surface {
             return null;
         }
         copy.setShader(getShader());
+        for (Surface part : surfaces) {
+            copy.addSurface(copyPart.apply(part));
+        }
         return copy;
-    }
-
-    private GroupShape holding(List<Surface> parts) {
-        parts.forEach(this::addSurface);
-        return this;
     }
 
     @Override

@@ -1,8 +1,10 @@
 package ray.surface;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.DoubleFunction;
+import ray.ShortPaths;
 import ray.math.Vec3;
 
 /**
@@ -81,7 +83,7 @@ public class Mesh extends TriangleSet {
 
     @Override
     public String describe(DoubleFunction<String> number) {
-        java.nio.file.Path file = getData() == null ? null : getData().source;
-        return "Mesh " + (file != null ? ray.ShortPaths.of(file) + " " : "") + "(" + count(children().size(), "triangle") + ")";
+        Path file = getData() == null ? null : getData().source;
+        return "Mesh " + (file != null ? ShortPaths.of(file) + " " : "") + "(" + count(children().size(), "triangle") + ")";
     }
 }

@@ -113,7 +113,7 @@ public abstract class Surface implements Hittable, Cloneable {
      * known to be made of parts.
      */
     public Surface searchCopy(Acceleration acceleration, SearchCounter counter) {
-        return new CountedSurface(this, counter);
+        return new CountedCopy.OneTest(this, counter);
     }
 
     /** The effects this surface itself calls for (a placed surface: transforms; a smooth triangle: vertex normals). */

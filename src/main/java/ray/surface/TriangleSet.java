@@ -43,13 +43,13 @@ public abstract class TriangleSet extends Surface {
 
     @Override
     public List<Surface> children() {
-        return Collections.unmodifiableList(Arrays.asList(triangles));
+        return Collections.unmodifiableList(triangles());
     }
 
     /** Searched through its hierarchy, or by the plain loop without acceleration, counting both kinds of test. */
     @Override
     public Surface searchCopy(Acceleration acceleration, SearchCounter counter) {
-        return new CountedTriangleSet(this, acceleration, counter);
+        return new CountedCopy.OfTriangles(this, acceleration, counter);
     }
 
     /** Drawn as one shape of triangles. */
