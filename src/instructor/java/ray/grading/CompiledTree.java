@@ -41,7 +41,7 @@ public final class CompiledTree {
     private CompiledTree(Path root, String fingerprint, String classpath) {
         this.root = root;
         this.fingerprint = fingerprint;
-        this.mistakeEvidence = new MistakeEvidence(root, root.resolve("classes") + File.pathSeparator + classpath);
+        this.mistakeEvidence = new MistakeEvidence(root, classpath);
     }
 
     /**
@@ -56,6 +56,7 @@ public final class CompiledTree {
             ProjectTree.deleteRecursively(at);
             throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
         }
+        GradingClasses.prepare(at, classpath);
         return new CompiledTree(at, fingerprint(at), classpath);
     }
 

@@ -80,7 +80,7 @@ public final class DiagnosisEvaluation implements Callable<Integer> {
         Files.createDirectories(out);
         Path trees = Files.createTempDirectory(out, ".instructor-");
         CompiledTree tree = CompiledTree.build(project, trees.resolve("tree"), classpath);
-        ExecutorService pool = Executors.newFixedThreadPool(Math.max(1, jobs));
+        ExecutorService pool = GradingSlots.pool(Math.max(1, jobs));
         try {
             List<Future<DiagnosisRow>> rows = new ArrayList<>();
             for (DiagnosisCase c : cases) {
@@ -118,7 +118,7 @@ public final class DiagnosisEvaluation implements Callable<Integer> {
         }
         try (OutputStream log = Files.newOutputStream(folder.resolve("grader.log"))) {
             ThreadOutput.route(log);
-            new CommandLine(new Grader(tree)).execute(args.toArray(new String[0]));
+            new CommandLine(new Grader(tree, GradingSlots.current())).execute(args.toArray(new String[0]));
         } finally {
             ThreadOutput.route(null);
         }

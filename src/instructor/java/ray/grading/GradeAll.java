@@ -90,7 +90,7 @@ public final class GradeAll implements Callable<Integer> {
         // The instructor's tree is compiled once for the class (when there is anything to grade),
         // in a hidden folder of -Pout that the run removes; each grading copies it.
         trees = Files.createTempDirectory(out, ".instructor-");
-        ExecutorService pool = Executors.newFixedThreadPool(jobs);
+        ExecutorService pool = GradingSlots.pool(jobs);
         List<Future<?>> running = new ArrayList<>();
         List<Double> seconds = Collections.synchronizedList(new ArrayList<>());
         try {
@@ -253,7 +253,7 @@ public final class GradeAll implements Callable<Integer> {
             if (noIsolation) {
                 args.add("--no-isolation");
             }
-            int status = new CommandLine(new Grader(tree)).execute(args.toArray(new String[0]));
+            int status = new CommandLine(new Grader(tree, GradingSlots.current())).execute(args.toArray(new String[0]));
             if (status != 0) {
                 log.println("failed to grade " + s.id() + " (score 0): see " + folder.resolve("results.json"));
             }

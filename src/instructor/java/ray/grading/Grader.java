@@ -78,18 +78,28 @@ public final class Grader implements Callable<Integer> {
     private final CompiledTree sharedTree;
 
     public Grader() {
-        this(null);
+        this(null, 0);
     }
 
-    /** A grader that copies {@code sharedTree} (which it only reads) instead of compiling the instructor's tree. */
-    Grader(CompiledTree sharedTree) {
+    /**
+     * A grader that copies {@code sharedTree} (which it only reads) instead of compiling the
+     * instructor's tree, and runs the submission's code as grading slot {@code slot}'s user (gradeAll
+     * grades several submissions at once, each as a user of its own).
+     */
+    Grader(CompiledTree sharedTree, int slot) {
         this.sharedTree = sharedTree;
+        this.slot = slot;
     }
+
+    /** Which of gradeAll's gradings at once this is: its student code runs as that slot's user. */
+    private int slot;
 
     /** This run's own work folder under {@code out}. */
     private Path work;
-    /** Where, and as whom, the test JVMs run (Sandbox); made with the work folder. */
+    /** Where, and as whom, the workers run student code (Sandbox); made once the instructor's tree is compiled. */
     private Sandbox sandbox;
+    /** The instructor's tests, by task, as the tree lists them: the only tests that count, worth what they say. */
+    private final Map<Integer, List<TestOutcome>> listed = new LinkedHashMap<>();
     /** The known mistakes failed tests' results are, by test id (VariantMistakes). */
     private final Map<String, String> mistakeNames = new LinkedHashMap<>();
 
@@ -110,11 +120,7 @@ public final class Grader implements Callable<Integer> {
         try {
             Files.createDirectories(out);
             work = Files.createTempDirectory(out, "work-");
-            sandbox = Sandbox.create(project, !noIsolation);
-            if (sandbox.warning() != null) {
-                System.err.println("warning: " + sandbox.warning());
-            }
-            outcomes = submission == null ? gradeInstructorTree() : gradeSubmission(output);
+            outcomes = gradeSubmission(output);
             // Nothing the student's code started may still be running when the results are written.
             sandbox.endStrayProcesses();
             // Student code can read the grading tree: nothing it quotes from the instructor's files reaches the results.
@@ -127,7 +133,7 @@ public final class Grader implements Callable<Integer> {
             outcomes = outcomes.stream().map(t -> mistakeNames.containsKey(t.id()) && !t.isRenderTest()
                     ? t.withMessage(t.message() + "\n" + mistakeNames.get(t.id())) : t).collect(java.util.stream.Collectors.toList());
             // Taken now: the render tests' pictures are in the work folder, which goes below.
-            pictures = RenderFeedback.of(outcomes, sandbox.tree(), mistakeNames);
+            pictures = RenderFeedback.of(outcomes, instructorTree(), mistakeNames);
         } catch (Exception | Error e) {
             // Whatever went wrong, the platform reads a result: 0 points and why, not an earlier student's file.
             String why = "The autograder could not grade this submission: " + (e.getMessage() == null ? e.toString() : e.getMessage());
@@ -181,31 +187,41 @@ public final class Grader implements Callable<Integer> {
         }
     }
 
-    private List<TestOutcome> gradeInstructorTree() throws IOException, InterruptedException {
-        return timed(tests(instructorTree()).inSandbox(sandbox)).run(onlyTask);
-    }
-
+    /**
+     * Grades the submission (or, without one, the instructor tree's own student files) task by task. The
+     * instructor's tree is copied and compiled once, with the handout's classes for the workers and the
+     * stand-ins for the judges ({@link GradingClasses}); each task's files then compile against the
+     * handout alone, and the task's tests run in a judge whose stand-ins ask a worker that runs those
+     * classes, so that every other class (framework, tests, the other tasks) is the solution's, and
+     * none of them reaches the student's code.
+     */
     private List<TestOutcome> gradeSubmission(StringBuilder output) throws IOException, InterruptedException {
         Map<String, Integer> studentFiles = StudentFiles.in(project);
         if (onlyTask != null && !studentFiles.containsValue(onlyTask)) {
             throw new IllegalArgumentException("--task " + onlyTask + ": there is no such task; the tasks are "
                     + new TreeSet<>(studentFiles.values()));
         }
-        Submission handedIn = Submission.locate(submission, studentFiles.keySet(), work.resolve("submission"));
-        Map<String, Path> overlay = new LinkedHashMap<>(handedIn.files);
-        describe(handedIn, output);
-        for (String missing : handedIn.missing) {
-            // A file not handed in counts as the untouched handout's stub.
-            Path stub = work.resolve("stubs").resolve(missing);
-            Files.createDirectories(stub.getParent());
-            String solution = Files.readString(project.resolve(missing), StandardCharsets.UTF_8);
-            Files.writeString(stub, SolutionMarkers.studentVersion(solution, missing), StandardCharsets.UTF_8);
-            overlay.put(missing, stub);
+        Map<String, Path> overlay = new LinkedHashMap<>();
+        if (submission == null) {
+            studentFiles.keySet().forEach(file -> overlay.put(file, project.resolve(file)));
+        } else {
+            Submission handedIn = Submission.locate(submission, studentFiles.keySet(), work.resolve("submission"));
+            overlay.putAll(handedIn.files);
+            describe(handedIn, output);
+            for (String missing : handedIn.missing) {
+                // A file not handed in counts as the untouched handout's stub.
+                Path stub = work.resolve("stubs").resolve(missing);
+                Files.createDirectories(stub.getParent());
+                String solution = Files.readString(project.resolve(missing), StandardCharsets.UTF_8);
+                Files.writeString(stub, SolutionMarkers.studentVersion(solution, missing), StandardCharsets.UTF_8);
+                overlay.put(missing, stub);
+            }
         }
-        // The instructor's tree is copied and compiled once; each task then compiles only its own files
-        // against it, and its tests run with those classes first on the class path, so that every
-        // other class (framework, tests, the other tasks) is the solution's.
         Path instructor = instructorTree();
+        sandbox = Sandbox.create(GradingClasses.handout(instructor), !noIsolation, slot);
+        if (sandbox.warning() != null) {
+            System.err.println("warning: " + sandbox.warning());
+        }
         List<TestOutcome> outcomes = new ArrayList<>();
         for (int task : new TreeSet<>(studentFiles.values())) {
             if (onlyTask != null && task != onlyTask) {
@@ -221,33 +237,88 @@ public final class Grader implements Callable<Integer> {
                     taskFiles.put(path, file);
                 }
             });
-            Path taskDir = work.resolve("task-" + task);
-            List<Path> sources = new ArrayList<>();
-            for (Map.Entry<String, Path> file : taskFiles.entrySet()) {
-                Path copy = taskDir.resolve(file.getKey());
-                Files.createDirectories(copy.getParent());
-                Files.copy(file.getValue(), copy, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-                sources.add(copy);
-            }
-            String againstInstructor = instructor.resolve("classes") + java.io.File.pathSeparator + classpath;
-            CompileResult taskCompiled = ProjectCompiler.compile(taskDir, sources, taskDir.resolve("classes"), againstInstructor);
-            if (!taskCompiled.ok()) {
-                // Only this task's tests fail: each other task is graded with its own files, which may compile.
-                String files = String.join(", ", taskFiles.keySet());
-                String why = "Task " + task + "'s files (" + files + ") do not compile with the rest of the handout, so its"
-                        + " tests could not run; the other tasks are graded on their own. (If they compile in your project,"
-                        + " do they use something you changed in another task's file?)\n" + taskCompiled.messages();
-                output.append(why).append('\n');
-                outcomes.addAll(allFailed(task, why));
-            } else {
-                TestProcess tests = timed(new TestProcess(instructor, taskDir.resolve("classes"), againstInstructor,
-                        taskDir.resolve("test-run")).inSandbox(sandbox));
-                List<TestOutcome> taskOutcomes = runOrFail(tests, task);
-                outcomes.addAll(taskOutcomes);
-                nameMistakes(instructor, task, taskOutcomes, studentFiles, againstInstructor, taskDir.resolve("mistakes"));
-            }
+            outcomes.addAll(gradeTask(task, taskFiles, instructor, studentFiles, output));
         }
         return outcomes;
+    }
+
+    /** One task: its files compiled against the handout, checked to hold only their own classes, and its tests judged. */
+    private List<TestOutcome> gradeTask(int task, Map<String, Path> taskFiles, Path instructor, Map<String, Integer> studentFiles,
+            StringBuilder output) throws IOException, InterruptedException {
+        Path taskDir = work.resolve("task-" + task);
+        List<Path> sources = new ArrayList<>();
+        for (Map.Entry<String, Path> file : taskFiles.entrySet()) {
+            Path copy = taskDir.resolve(file.getKey());
+            Files.createDirectories(copy.getParent());
+            Files.copy(file.getValue(), copy, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            sources.add(copy);
+        }
+        Path classes = taskDir.resolve("classes");
+        CompileResult taskCompiled = ProjectCompiler.compile(taskDir, sources, classes, GradingClasses.handout(instructor).toString());
+        String files = String.join(", ", taskFiles.keySet());
+        if (!taskCompiled.ok()) {
+            // Only this task's tests fail: each other task is graded with its own files, which may compile.
+            String why = "Task " + task + "'s files (" + files + ") do not compile with the rest of the handout, so its"
+                    + " tests could not run; the other tasks are graded on their own. (If they compile in your project,"
+                    + " do they use something you changed in another task's file?)\n" + taskCompiled.messages();
+            output.append(why).append('\n');
+            return allFailed(task, why);
+        }
+        String refused = StudentClasses.refused(classes, taskFiles.keySet());
+        if (refused != null) {
+            String why = "Task " + task + "'s files (" + files + ") were not graded: " + refused;
+            output.append(why).append('\n');
+            return allFailed(task, why);
+        }
+        Path setup = taskDir.resolve("worker");
+        sandbox.containment(classes, "task-" + task).write(setup);
+        TestProcess tests = timed(new TestProcess(instructor, instructor.resolve("classes"), classpath, taskDir.resolve("test-run"))
+                .judging(GradingClasses.standIns(instructor, task), setup));
+        List<TestOutcome> taskOutcomes;
+        try {
+            taskOutcomes = judged(task, runOrFail(tests, task));
+        } finally {
+            // Nothing of the student's outlives its task's tests.
+            sandbox.endStrayProcesses();
+        }
+        nameMistakes(instructor, task, taskOutcomes, studentFiles, taskDir.resolve("mistakes"));
+        return taskOutcomes;
+    }
+
+    /**
+     * The task's outcomes as the instructor's list has them: each listed test once, worth what the
+     * list says, passed only when the judge reported it passed; a test the judge did not report, or
+     * reported twice, fails; anything reported that is not listed counts for nothing.
+     */
+    private List<TestOutcome> judged(int task, List<TestOutcome> ran) throws IOException, InterruptedException {
+        Map<String, List<TestOutcome>> byId = new LinkedHashMap<>();
+        for (TestOutcome t : ran) {
+            byId.computeIfAbsent(t.id(), k -> new ArrayList<>()).add(t);
+        }
+        List<TestOutcome> judged = new ArrayList<>();
+        for (TestOutcome expected : listedTests(task)) {
+            List<TestOutcome> reports = byId.getOrDefault(expected.id(), List.of());
+            if (reports.size() == 1) {
+                judged.add(expected.withResultOf(reports.get(0)));
+            } else {
+                judged.add(expected.failedWith(reports.isEmpty() ? "this test reported no result" : "this test reported "
+                        + reports.size() + " results"));
+            }
+        }
+        return judged;
+    }
+
+    /** The instructor's graded tests of {@code task}, listed once per run (under gradeAll, once for the class). */
+    private List<TestOutcome> listedTests(Integer task) throws IOException, InterruptedException {
+        Path tree = instructorTree();
+        synchronized (listed) {
+            List<TestOutcome> tests = listed.get(task);
+            if (tests == null) {
+                tests = sharedTree != null ? sharedTree.tests(task, () -> tests(tree).list(task)) : tests(tree).list(task);
+                listed.put(task, tests);
+            }
+            return tests;
+        }
     }
 
     /**
@@ -256,7 +327,7 @@ public final class Grader implements Callable<Integer> {
      * fail grading.
      */
     private void nameMistakes(Path instructor, int task, List<TestOutcome> taskOutcomes, Map<String, Integer> studentFiles,
-            String againstInstructor, Path mistakesWork) {
+            Path mistakesWork) {
         if (taskOutcomes.stream().allMatch(TestOutcome::passed) || System.nanoTime() > deadline) {
             return;
         }
@@ -265,8 +336,8 @@ public final class Grader implements Callable<Integer> {
             // the class, from the compiled tree's variants (not this tree's copy).
             MistakeEvidence evidence = sharedTree != null ? sharedTree.mistakeEvidence() : new MistakeEvidence();
             Path variants = sharedTree != null ? sharedTree.root() : instructor;
-            mistakeNames.putAll(VariantMistakes.named(instructor, sandbox.tree(), taskOutcomes,
-                    VariantMistakes.of(variants, task, studentFiles), againstInstructor, mistakesWork, evidence));
+            mistakeNames.putAll(VariantMistakes.named(instructor, instructor, taskOutcomes,
+                    VariantMistakes.of(variants, task, studentFiles), classpath, mistakesWork, evidence));
         } catch (IOException | RuntimeException e) {
             // The feedback goes without a name; the grade is unchanged.
         } catch (InterruptedException e) {
@@ -310,18 +381,15 @@ public final class Grader implements Callable<Integer> {
             if (!compiled.ok()) {
                 throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
             }
+            GradingClasses.prepare(tree, classpath);
         }
         return tree;
     }
 
     /** Every graded test (of one task, or all), failed with the same reason: listed from the instructor's own tree. */
     private List<TestOutcome> allFailed(Integer task, String why) throws IOException, InterruptedException {
-        Path tree = instructorTree();
         List<TestOutcome> failed = new ArrayList<>();
-        // The list is the instructor's: under gradeAll, made once for the class.
-        List<TestOutcome> listed = sharedTree != null ? sharedTree.tests(task, () -> tests(tree).inSandbox(sandbox).list(task))
-                : tests(tree).inSandbox(sandbox).list(task);
-        for (TestOutcome t : listed) {
+        for (TestOutcome t : listedTests(task)) {
             failed.add(t.failedWith(why));
         }
         return failed;

@@ -31,9 +31,9 @@ final class MistakeEvidence {
     private final Map<String, Map<String, String>> failures = new ConcurrentHashMap<>();
     /** One lock per mistake: gradings (and one grading's threads) run different mistakes' tests at once. */
     private final Map<String, Object> testLocks = new ConcurrentHashMap<>();
-    /** Where the mistakes run, and the classes they run with; null: the grading's own tree. */
+    /** Where the mistakes run (a compiled tree: its classes, handout and stand-ins), and its libraries; null: the grading's own tree. */
     private final Path home;
-    private final String homeClasspath;
+    private final String homeLibraries;
 
     /** Evidence for one grading, made in its own tree. */
     MistakeEvidence() {
@@ -42,12 +42,11 @@ final class MistakeEvidence {
 
     /**
      * Evidence shared by gradings, made in {@code home} (a compiled instructor tree that no student
-     * code runs in) with {@code classpath} (its classes and the libraries), never in a grading's
-     * tree, whose files that grading's code could have changed.
+     * code runs in) with {@code libraries}, never in a grading's tree.
      */
-    MistakeEvidence(Path home, String classpath) {
+    MistakeEvidence(Path home, String libraries) {
         this.home = home;
-        this.homeClasspath = classpath;
+        this.homeLibraries = libraries;
     }
 
     /**
@@ -81,21 +80,27 @@ final class MistakeEvidence {
      * {@link FailureSignatures#of} keeps them), running them in {@code out} the first
      * time; empty when they could not run (no compile, out of time).
      */
-    Optional<Map<String, String>> failedUnitTests(Path tree, Variant mistake, String classpath, Path out)
+    Optional<Map<String, String>> failedUnitTests(Path tree, Variant mistake, String libraries, Path out)
             throws IOException, InterruptedException {
         synchronized (testLocks.computeIfAbsent(key(mistake), k -> new Object())) {
             Map<String, String> known = failures.get(key(mistake));
             if (known != null) {
                 return Optional.of(known);
             }
-            Path classes = compiled(mistake, classpathOr(classpath), out);
+            Path runIn = runIn(tree);
+            Path classes = compiled(mistake, runIn, out);
             Optional<Map<String, String>> ran = Optional.empty();
             if (classes != null) {
-                try {
-                    ran = Optional.of(FailureSignatures.of(new TestProcess(runIn(tree), classes, classpathOr(classpath),
-                            out.resolve("tests")).withoutRenderTests().run(mistake.task)));
+                // As a submission's code runs: in a worker, asked by the judge's stand-ins. The mistake is the
+                // instructor's code, so its worker runs as the grader's user.
+                try (Sandbox sandbox = Sandbox.create(GradingClasses.handout(runIn), false, 0)) {
+                    Path setup = out.resolve("worker");
+                    sandbox.containment(classes, "mistake").write(setup);
+                    ran = Optional.of(FailureSignatures.of(new TestProcess(runIn, runIn.resolve("classes"), classpathOr(libraries),
+                            out.resolve("tests")).judging(GradingClasses.standIns(runIn, mistake.task), setup).withoutRenderTests()
+                            .run(mistake.task)));
                 } catch (IllegalStateException e) {
-                    // The test JVM could not run them: no evidence, so no name from them.
+                    // The judge could not run them: no evidence, so no name from them.
                 }
             }
             // When they could not run, nothing is kept: the next grading tries again.
@@ -112,16 +117,17 @@ final class MistakeEvidence {
         return home != null ? home : tree;
     }
 
-    private String classpathOr(String classpath) {
-        return home != null ? homeClasspath : classpath;
+    private String classpathOr(String libraries) {
+        return home != null ? homeLibraries : libraries;
     }
 
     /** The mistake's files compiled into {@code out}/classes (once), or null when they do not compile. */
-    private static synchronized Path compiled(Variant mistake, String classpath, Path out) throws IOException {
+    /** The mistake's classes, compiled (once) against the handout's framework of {@code tree}; null when they do not compile. */
+    private static synchronized Path compiled(Variant mistake, Path tree, Path out) throws IOException {
         Path classes = out.resolve("classes");
         Path done = out.resolve("compiled");
         if (!Files.exists(done)) {
-            if (!ProjectCompiler.compile(mistake.folder, mistake.sources, classes, classpath).ok()) {
+            if (!ProjectCompiler.compile(mistake.folder, mistake.sources, classes, GradingClasses.handout(tree).toString()).ok()) {
                 return null;
             }
             Files.writeString(done, "");
@@ -129,16 +135,16 @@ final class MistakeEvidence {
         return classes;
     }
 
-    /** The scenes rendered with the mistake's files in place of the solution's, or null when that fails. */
-    private static Path render(Path tree, Variant mistake, List<String> scenes, String classpath, Path out)
+    private static Path render(Path tree, Variant mistake, List<String> scenes, String libraries, Path out)
             throws IOException, InterruptedException {
-        Path classes = compiled(mistake, classpath, out);
+        Path classes = compiled(mistake, tree, out);
         if (classes == null) {
             return null;
         }
         Path renders = out.resolve("renders");
+        // The instructor's own mistake, rendered in one process: its classes before the tree's.
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx1g", "-Djava.awt.headless=true", "-cp", classes + File.pathSeparator + classpath,
+                "-Xmx1g", "-Djava.awt.headless=true", "-cp", classes + File.pathSeparator + tree.resolve("classes") + File.pathSeparator + libraries,
                 "ray.cli.Ray1", "render", "-o", renders.toString()));
         // A few scenes' renders: a short-lived JVM, like the tests'.
         command.addAll(1, TestProcess.SHORT_LIVED_JVM);

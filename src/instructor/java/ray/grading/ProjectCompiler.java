@@ -58,17 +58,23 @@ public final class ProjectCompiler {
      * what grading a task needs (the rest of the tree is compiled once per submission, not per task).
      */
     public static CompileResult compile(Path project, List<Path> sources, Path classesDir, String classpath) throws IOException {
+        ProjectTree.deleteRecursively(classesDir);
+        return compileInto(project, sources, classesDir, classpath);
+    }
+
+    /** Compiles {@code sources} into {@code classesDir}, keeping what it holds already. */
+    public static CompileResult compileInto(Path project, List<Path> sources, Path classesDir, String classpath) throws IOException {
         JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
         if (compiler == null) {
             throw new IllegalStateException("no Java compiler in this runtime: grading needs a JDK, not a JRE");
         }
-        ProjectTree.deleteRecursively(classesDir);
         Files.createDirectories(classesDir);
         DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
         StringWriter output = new StringWriter();
         boolean ok;
         try (StandardJavaFileManager files = compiler.getStandardFileManager(diagnostics, null, StandardCharsets.UTF_8)) {
-            List<String> options = List.of("--release", "17", "-encoding", "UTF-8", "-nowarn", "-Xmaxerrs", "20",
+            // No annotation processing: nothing on the class path runs while a submission compiles.
+            List<String> options = List.of("--release", "17", "-encoding", "UTF-8", "-nowarn", "-proc:none", "-Xmaxerrs", "20",
                     "-d", classesDir.toString(), "-cp", classpath);
             ok = compiler.getTask(output, files, diagnostics, options, null,
                     files.getJavaFileObjectsFromPaths(sources)).call();
@@ -76,7 +82,6 @@ public final class ProjectCompiler {
         return new CompileResult(ok, describe(project, diagnostics) + output);
     }
 
-    /** Errors as "src/main/java/ray/surface/Sphere.java:42: error: ';' expected", paths relative to the project. */
     private static String describe(Path project, DiagnosticCollector<JavaFileObject> diagnostics) {
         StringBuilder text = new StringBuilder();
         diagnostics.getDiagnostics().stream()

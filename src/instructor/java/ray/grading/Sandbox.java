@@ -1,96 +1,105 @@
 package ray.grading;
 
-import java.io.DataOutputStream;
 import java.io.File;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
-import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.nio.file.attribute.UserPrincipal;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.Set;
-import java.util.jar.JarEntry;
-import java.util.jar.JarFile;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
-import ray.grading.boot.InMemoryMain;
+import ray.grading.judge.Containment;
+import ray.grading.worker.WorkerMain;
 
 /**
- * Where a test JVM that runs student code lives, and as whom. When the grader runs as root and the
- * user {@value #USER} exists (setup.sh and the PrairieLearn Dockerfile make it), the test JVM runs
- * as that user; everything it may read is in this folder:
- * <ul>
- * <li>{@code boot/}: the one small class that starts it ({@link InMemoryMain});</li>
- * <li>{@code lib/}: copies of the public libraries (JUnit, ...);</li>
- * <li>{@code tree/}: its working folder, the scenes and settings.gradle, which the handout ships too;</li>
- * <li>{@code run/}: what it writes (the events file, a home and a temporary folder).</li>
- * </ul>
- * The compiled tree itself (framework, solution, tests, hidden tests) is never a file it can read:
- * its bytes go to the JVM's standard input and are defined in memory. After each test JVM, every
- * process left owned by that user is ended, so nothing the student started outlives its tests.
+ * Where and as whom a submission's code runs: the worker of each task (ray.grading.worker), started
+ * by the judge as the grader sets it up here ({@link #containment}). When the grader runs as root
+ * (as on both platforms), the worker runs as a user of this grading's own, {@value #USER} (or
+ * {@code ray1-student-2}, ... for the other gradings gradeAll runs at once, made when missing), so
+ * that ending every process of that user ends all the submission's code and no other submission's;
+ * in a PID namespace of its own where the kernel allows one (ending the worker then ends everything
+ * in it at once) and without network; with at most {@value #MAX_PROCESSES} processes. What it can
+ * read of this folder is the classes it runs (the handout's framework and the student's own), which
+ * are no secret, as root's files it cannot change; what it can write is a home and a temporary
+ * folder of its own. The tests, the solution, the hidden tests and the references stay with the
+ * judge, in the grader's private folder.
  *
- * <p>Without root (an instructor's own `gradle grade`), the same layout is used but the JVM runs as
- * the grader's user, and {@link #warning} says so: then only the JVM's own descendants are ended.
+ * <p>Without root (an instructor's own {@code gradle grade}), the worker runs as the grader's user
+ * and {@link #warning} says so; ending it then ends its process tree.
  */
 final class Sandbox implements AutoCloseable {
-    /** The unprivileged user student code runs as. */
+    /** The unprivileged user a submission's code runs as; gradeAll's other gradings at once use USER-2, USER-3, ... */
     static final String USER = "ray1-student";
     /** At most this many processes (threads count) for the user: a fork bomb stops there. */
     static final int MAX_PROCESSES = 2048;
+    /** The worker's heap: unbounded allocation in student code fails its call, not the grader. */
+    static final String HEAP = "-Xmx1g";
 
     private final Path folder;
     private final Optional<int[]> user;
+    private final String userName;
     private final String warning;
-    /** Public libraries already copied to lib/, by original path. */
-    private final Map<String, Path> copiedLibraries = new LinkedHashMap<>();
-    /** The test JVMs' descendants seen while they ran (what is ended without a user of its own). */
-    private final Set<ProcessHandle> seen = new LinkedHashSet<>();
-    /**
-     * The test JVMs running now, of every sandbox in this grader (gradeAll grades several submissions
-     * at once, all as the one user): what they and their descendants run is theirs to end, not a
-     * stray of another sandbox's.
-     */
-    private static final Set<ProcessHandle> RUNNING = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
-    private Sandbox(Path folder, Optional<int[]> user, String warning) {
+    private Sandbox(Path folder, Optional<int[]> user, String userName, String warning) {
         this.folder = folder;
         this.user = user;
+        this.userName = userName;
         this.warning = warning;
     }
 
+    /** The user of grading slot {@code slot} (0 for a single grading). */
+    static String userOf(int slot) {
+        return slot == 0 ? USER : USER + "-" + (slot + 1);
+    }
+
     /**
-     * A new sandbox in the system's temporary folder for grading {@code project}'s tests: isolated when
-     * the grader is root and {@value #USER} exists, unless {@code isolate} is false.
+     * A new sandbox in the system's temporary folder for a submission's workers, which run on
+     * {@code handout} (a copy is made): isolated when the grader is root and isolation is wanted, as
+     * the user of {@code slot}, made when it does not exist yet.
      */
-    static Sandbox create(Path project, boolean isolate) throws IOException {
+    static Sandbox create(Path handout, boolean isolate, int slot) throws IOException {
         Optional<int[]> user = Optional.empty();
+        String name = userOf(slot);
         String warning = null;
         if (!isolate) {
             warning = "student code runs as this grader's own user (isolation turned off)";
         } else if (!isRoot()) {
             warning = "student code runs as this grader's own user, not a separate one (grade as root, with the user "
                     + USER + " that setup.sh makes, to keep it from the grader's files)";
+        } else if (command("setpriv") == null) {
+            warning = "student code runs as root: setpriv (util-linux) is missing";
         } else {
-            user = lookUp(USER);
+            user = lookUp(name);
+            if (user.isEmpty() && slot > 0) {
+                user = makeUser(name);
+            }
             if (user.isEmpty()) {
-                warning = "student code runs as root: there is no user " + USER + " (setup.sh makes it: useradd --system " + USER + ")";
-            } else if (command("setpriv") == null) {
-                user = Optional.empty();
-                warning = "student code runs as root: setpriv (util-linux) is missing";
+                warning = "student code runs as root: there is no user " + name + " (setup.sh makes it: useradd --system " + name + ")";
             }
         }
         Path folder = Files.createTempDirectory("ray1-sandbox-");
-        Sandbox sandbox = new Sandbox(folder, user, warning);
+        Sandbox sandbox = new Sandbox(folder, user, user.isPresent() ? name : null, warning);
         try {
-            sandbox.layOut(project);
+            Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
+            ProjectTree.copyRecursively(handout, folder.resolve("handout"));
+            Files.createDirectories(folder.resolve("home"));
+            Files.createDirectories(folder.resolve("tmp"));
+            readOnly(folder.resolve("handout"));
+            if (user.isPresent()) {
+                // Its own folders, which no other user (another slot's submission) may enter.
+                for (String own : List.of("home", "tmp")) {
+                    handOver(folder.resolve(own), sandbox);
+                    Files.setPosixFilePermissions(folder.resolve(own), PosixFilePermissions.fromString("rwx------"));
+                }
+            }
+            // Whatever a crashed grading left running as this user ends before this one starts.
+            sandbox.endStrayProcesses();
         } catch (IOException | RuntimeException e) {
             ProjectTree.deleteRecursively(folder);
             throw e;
@@ -98,7 +107,7 @@ final class Sandbox implements AutoCloseable {
         return sandbox;
     }
 
-    /** True when test JVMs run as {@value #USER}. */
+    /** True when workers run as a user of their own. */
     boolean isolated() {
         return user.isPresent();
     }
@@ -108,201 +117,44 @@ final class Sandbox implements AutoCloseable {
         return warning;
     }
 
-    /** The tests' working folder. */
-    Path tree() {
-        return folder.resolve("tree");
-    }
-
-    /** Where the test JVM may write (its events files). */
-    Path runFolder() {
-        return folder.resolve("run");
-    }
-
-    private void layOut(Path project) throws IOException {
-        Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
-        copyBootClasses(folder.resolve("boot"));
-        Files.createDirectories(folder.resolve("lib"));
-        ProjectTree.copyRecursively(project.resolve("scenes"), tree().resolve("scenes"));
-        Files.copy(project.resolve("settings.gradle"), tree().resolve("settings.gradle"));
-        Files.createDirectories(runFolder().resolve("home"));
-        Files.createDirectories(runFolder().resolve("tmp"));
-        makeReadable(folder);
-        if (user.isPresent()) {
-            handOver(tree());
-            handOver(runFolder());
-        }
-    }
-
     /**
-     * The command that starts {@code mainClass} with {@code arguments} in a test JVM: as the user when
-     * isolated, with the boot class and the public libraries of {@code classpath} on its class path.
-     * Its standard input must then receive {@link #writeClasses} of the same class path.
+     * How the judge starts a worker that runs {@code classes} (the student's, or a known mistake's)
+     * first and the handout's framework after them: the classes are copied here as {@code name}, where
+     * the worker's user can read them and not change them.
      */
-    List<String> command(List<String> jvmOptions, String classpath, String mainClass, List<String> arguments) throws IOException {
+    Containment containment(Path classes, String name) throws IOException {
+        Path copy = folder.resolve(name);
+        ProjectTree.deleteRecursively(copy);
+        ProjectTree.copyRecursively(classes, copy);
+        readOnly(copy);
         List<String> command = new ArrayList<>();
         if (user.isPresent()) {
+            command.addAll(Namespaces.prefix());
             String prlimit = command("prlimit");
             if (prlimit != null) {
                 command.addAll(List.of(prlimit, "--nproc=" + MAX_PROCESSES + ":" + MAX_PROCESSES, "--"));
             }
             int[] ids = user.get();
-            command.addAll(List.of(command("setpriv"), "--reuid=" + ids[0], "--regid=" + ids[1], "--clear-groups",
-                    "--no-new-privs", "--"));
+            command.addAll(List.of(command("setpriv"), "--reuid=" + ids[0], "--regid=" + ids[1], "--clear-groups", "--no-new-privs", "--"));
         }
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
-        command.addAll(jvmOptions);
-        // No agent may attach to the test JVM and read the classes back out of it.
-        command.addAll(List.of("-XX:+DisableAttachMechanism", "-Duser.home=" + runFolder().resolve("home"),
-                "-Djava.io.tmpdir=" + runFolder().resolve("tmp")));
-        List<String> path = new ArrayList<>(List.of(folder.resolve("boot").toString()));
-        for (Path library : publicLibraries(classpath)) {
-            path.add(library.toString());
-        }
-        command.addAll(List.of("-cp", String.join(File.pathSeparator, path), InMemoryMain.class.getName(), mainClass));
-        command.addAll(arguments);
-        return command;
-    }
-
-    /**
-     * The environment variable naming the sandbox a process belongs to: its test JVM and whatever
-     * that starts inherit it, so that a grader ends only its own strays, not another grader's running
-     * tests (two graders as root on one machine share the user).
-     */
-    static final String MARKER = "RAY1_SANDBOX";
-
-    /** Sets the environment a test JVM starts with: a home and temporary folder of its own, and this sandbox's marker. */
-    void environment(Map<String, String> environment) {
-        environment.put(MARKER, folder.toString());
-        environment.keySet().removeIf(k -> k.startsWith("JAVA_TOOL_OPTIONS") || k.equals("_JAVA_OPTIONS") || k.equals("JDK_JAVA_OPTIONS"));
-        environment.put("HOME", runFolder().resolve("home").toString());
-        environment.put("TMPDIR", runFolder().resolve("tmp").toString());
+        // The JVM's own messages go to standard error: standard output carries only the protocol.
+        command.addAll(List.of(HEAP, "-XX:+DisplayVMOutputToStderr", "-Xshare:auto", "-Djava.awt.headless=true",
+                "-Duser.home=" + folder.resolve("home"), "-Djava.io.tmpdir=" + folder.resolve("tmp"),
+                "-cp", copy + File.pathSeparator + folder.resolve("handout"), WorkerMain.class.getName()));
+        Map<String, String> environment = new LinkedHashMap<>();
+        environment.put("HOME", folder.resolve("home").toString());
+        environment.put("TMPDIR", folder.resolve("tmp").toString());
         if (user.isPresent()) {
-            environment.put("USER", USER);
-            environment.put("LOGNAME", USER);
+            environment.put("USER", userName);
+            environment.put("LOGNAME", userName);
         }
+        return new Containment(command, environment, userName);
     }
 
-    /**
-     * Writes every file of the class path's private entries (class folders, and jars holding ray
-     * classes) in the stream {@link InMemoryMain} reads, the first of a name first, as a class path
-     * would choose.
-     */
-    static void writeClasses(String classpath, OutputStream out) throws IOException {
-        DataOutputStream data = new DataOutputStream(new java.io.BufferedOutputStream(out, 1 << 16));
-        Set<String> sent = new java.util.HashSet<>();
-        for (String entry : classpath.split(File.pathSeparator)) {
-            if (entry.isEmpty()) {
-                continue;
-            }
-            Path path = Path.of(entry);
-            if (Files.isDirectory(path)) {
-                try (Stream<Path> walk = Files.walk(path)) {
-                    for (Path file : walk.filter(Files::isRegularFile).sorted().collect(Collectors.toList())) {
-                        String name = path.relativize(file).toString().replace(File.separatorChar, '/');
-                        if (sent.add(name)) {
-                            send(data, name, Files.readAllBytes(file));
-                        }
-                    }
-                }
-            } else if (isPrivateJar(path)) {
-                try (JarFile jar = new JarFile(path.toFile())) {
-                    for (JarEntry e : java.util.Collections.list(jar.entries())) {
-                        if (!e.isDirectory() && sent.add(e.getName())) {
-                            try (InputStream in = jar.getInputStream(e)) {
-                                send(data, e.getName(), in.readAllBytes());
-                            }
-                        }
-                    }
-                }
-            }
-        }
-        data.writeBoolean(false);
-        data.flush();
-    }
-
-    private static void send(DataOutputStream data, String name, byte[] bytes) throws IOException {
-        data.writeBoolean(true);
-        data.writeUTF(name);
-        data.writeInt(bytes.length);
-        data.write(bytes);
-    }
-
-    /** Notes that a test JVM runs (until {@link #ended}). */
-    void started(Process child) {
-        RUNNING.add(child.toHandle());
-    }
-
-    /** Notes that the test JVM has ended, or been stopped. */
-    void ended(Process child) {
-        RUNNING.remove(child.toHandle());
-    }
-
-    /** Notes the test JVM's descendants as they are now (called while it runs). */
-    void watch(Process child) {
-        child.descendants().forEach(seen::add);
-    }
-
-    /**
-     * Ends every process the test JVM left behind: all of {@value #USER}'s processes when isolated
-     * (a detached `setsid` child too) but the running test JVMs of other sandboxes in this grader and
-     * their descendants, and the processes of other graders' live sandboxes; else the descendants
-     * seen. Returns how many were ended.
-     */
+    /** Ends every process of this sandbox's user (none without one); how many were ended. */
     int endStrayProcesses() {
-        int ended = 0;
-        for (int round = 0; round < 20; round++) {
-            List<ProcessHandle> left = user.isPresent()
-                    ? ProcessHandle.allProcesses().filter(p -> p.info().user().map(USER::equals).orElse(false))
-                            .filter(p -> !ofARunningTestJvm(p) && !ofAnotherLiveSandbox(p)).collect(Collectors.toList())
-                    : seen.stream().filter(ProcessHandle::isAlive).collect(Collectors.toList());
-            if (left.isEmpty()) {
-                break;
-            }
-            for (ProcessHandle p : left) {
-                if (p.destroyForcibly()) {
-                    ended++;
-                }
-            }
-            for (ProcessHandle p : left) {
-                try {
-                    p.onExit().get(1, java.util.concurrent.TimeUnit.SECONDS);
-                } catch (Exception e) {
-                    // Still going (a zombie waiting for its parent): the next round looks again.
-                }
-            }
-        }
-        seen.removeIf(p -> !p.isAlive());
-        return ended;
-    }
-
-    /** Whether the process is a running test JVM (of any sandbox) or one's descendant. */
-    private static boolean ofARunningTestJvm(ProcessHandle process) {
-        for (Optional<ProcessHandle> p = Optional.of(process); p.isPresent(); p = p.get().parent()) {
-            if (RUNNING.contains(p.get())) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /**
-     * Whether the process carries the marker of another sandbox that still exists (another grader's,
-     * on this machine): that grader ends it. A process without a marker, with this sandbox's, or with
-     * a removed sandbox's is a stray.
-     */
-    private boolean ofAnotherLiveSandbox(ProcessHandle process) {
-        try {
-            for (String variable : new String(Files.readAllBytes(Path.of("/proc", String.valueOf(process.pid()), "environ")),
-                    java.nio.charset.StandardCharsets.UTF_8).split("\0")) {
-                if (variable.startsWith(MARKER + "=")) {
-                    Path other = Path.of(variable.substring(MARKER.length() + 1));
-                    return !other.equals(folder) && Files.isDirectory(other) && other.getFileName().toString().startsWith("ray1-sandbox-");
-                }
-            }
-        } catch (IOException | RuntimeException e) {
-            // Gone already, or no /proc: nothing to spare.
-        }
-        return false;
+        return new Containment(List.of("true"), Map.of(), userName).endUsersProcesses();
     }
 
     /** Ends what is left and removes the folder. */
@@ -312,84 +164,39 @@ final class Sandbox implements AutoCloseable {
         ProjectTree.deleteRecursively(folder);
     }
 
-    /** The class path's public libraries (jars without ray classes), copied into lib/ once each. */
-    private List<Path> publicLibraries(String classpath) throws IOException {
-        List<Path> libraries = new ArrayList<>();
-        for (String entry : classpath.split(File.pathSeparator)) {
-            Path path = entry.isEmpty() ? null : Path.of(entry);
-            if (path == null || Files.isDirectory(path) || !Files.isRegularFile(path) || isPrivateJar(path)) {
-                continue;
+    /** Readable by everyone, writable by none but root: the classes a worker runs. */
+    private static void readOnly(Path root) throws IOException {
+        try (Stream<Path> walk = Files.walk(root)) {
+            for (Path p : walk.collect(Collectors.toList())) {
+                Files.setPosixFilePermissions(p, PosixFilePermissions.fromString(Files.isDirectory(p) ? "r-xr-xr-x" : "r--r--r--"));
             }
-            Path copy = copiedLibraries.get(entry);
-            if (copy == null) {
-                copy = folder.resolve("lib").resolve(copiedLibraries.size() + "-" + path.getFileName());
-                Files.copy(path, copy);
-                makeReadable(copy);
-                copiedLibraries.put(entry, copy);
-            }
-            libraries.add(copy);
-        }
-        return libraries;
-    }
-
-    /** A jar holding classes of ray1 itself (the grader's jar): never readable by student code. */
-    static boolean isPrivateJar(Path jar) throws IOException {
-        if (!Files.isRegularFile(jar) || !jar.toString().endsWith(".jar")) {
-            return false;
-        }
-        try (JarFile file = new JarFile(jar.toFile())) {
-            return file.stream().anyMatch(e -> e.getName().startsWith("ray/"));
         }
     }
 
-    /** Copies the boot package's classes (and only those) from wherever the grader's classes are. */
-    private static void copyBootClasses(Path boot) throws IOException {
-        String pkg = InMemoryMain.class.getPackageName().replace('.', '/') + "/";
-        Path source;
+    /** Gives the folder to the sandbox's user, who writes there. */
+    private static void handOver(Path root, Sandbox sandbox) throws IOException {
+        UserPrincipal owner = root.getFileSystem().getUserPrincipalLookupService().lookupPrincipalByName(sandbox.userName);
+        Files.setOwner(root, owner);
+        Files.setAttribute(root, "unix:gid", sandbox.user.get()[1]);
+    }
+
+    /** Makes a system user with no home and no shell (as setup.sh makes {@value #USER}); empty when that fails. */
+    private static Optional<int[]> makeUser(String name) {
+        String useradd = command("useradd");
+        if (useradd == null) {
+            return Optional.empty();
+        }
         try {
-            source = Path.of(InMemoryMain.class.getProtectionDomain().getCodeSource().getLocation().toURI());
-        } catch (URISyntaxException e) {
-            throw new IOException(e);
+            Process p = new ProcessBuilder(useradd, "--system", "--no-create-home", "--shell", "/usr/sbin/nologin", name)
+                    .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            p.waitFor(30, TimeUnit.SECONDS);
+        } catch (IOException e) {
+            return Optional.empty();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return Optional.empty();
         }
-        Files.createDirectories(boot.resolve(pkg));
-        if (Files.isDirectory(source)) {
-            try (Stream<Path> files = Files.list(source.resolve(pkg))) {
-                for (Path file : files.filter(f -> f.toString().endsWith(".class")).collect(Collectors.toList())) {
-                    Files.copy(file, boot.resolve(pkg).resolve(file.getFileName().toString()));
-                }
-            }
-        } else {
-            try (JarFile jar = new JarFile(source.toFile())) {
-                for (JarEntry e : java.util.Collections.list(jar.entries())) {
-                    String name = e.getName();
-                    if (name.startsWith(pkg) && name.endsWith(".class") && name.indexOf('/', pkg.length()) < 0) {
-                        try (InputStream in = jar.getInputStream(e)) {
-                            Files.write(boot.resolve(name), in.readAllBytes());
-                        }
-                    }
-                }
-            }
-        }
-    }
-
-    /** World-readable (and folders enterable): the sandbox's files are no secret, and the user must read them. */
-    private static void makeReadable(Path root) throws IOException {
-        try (Stream<Path> walk = Files.walk(root)) {
-            for (Path p : walk.collect(Collectors.toList())) {
-                Files.setPosixFilePermissions(p, PosixFilePermissions.fromString(Files.isDirectory(p) ? "rwxr-xr-x" : "rw-r--r--"));
-            }
-        }
-    }
-
-    /** Gives the folder and everything in it to the user, who writes there. */
-    private void handOver(Path root) throws IOException {
-        UserPrincipal owner = root.getFileSystem().getUserPrincipalLookupService().lookupPrincipalByName(USER);
-        try (Stream<Path> walk = Files.walk(root)) {
-            for (Path p : walk.collect(Collectors.toList())) {
-                Files.setOwner(p, owner);
-                Files.setAttribute(p, "unix:gid", user.get()[1]);
-            }
-        }
+        return lookUp(name);
     }
 
     /** Whether this process runs as root (Linux: /proc/self belongs to the process's user). */
@@ -417,7 +224,7 @@ final class Sandbox implements AutoCloseable {
     }
 
     /** The program's path on the usual system folders, or null. */
-    private static String command(String name) {
+    static String command(String name) {
         for (String dir : List.of("/usr/bin", "/bin", "/usr/sbin", "/sbin")) {
             if (Files.isExecutable(Path.of(dir, name))) {
                 return Path.of(dir, name).toString();

@@ -17,6 +17,11 @@ public record TestOutcome(String id, String className, String method, int task, 
         return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, passed, message, seconds);
     }
 
+    /** This listed test with the result (passed, message, seconds) of {@code ran}, a report of the same test. */
+    TestOutcome withResultOf(TestOutcome ran) {
+        return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, ran.passed, ran.message, ran.seconds);
+    }
+
     TestOutcome failedWith(String why) {
         return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, false, why, seconds);
     }

@@ -61,8 +61,12 @@ public final class TestProcess {
     private String pastDeadline;
     /** Set when watching stopped a test JVM at the deadline. */
     private boolean deadlineReached;
-    /** Where and as whom the test JVM runs student code; null for the instructor's own trees (classes on the class path). */
-    private Sandbox sandbox;
+    /** Stand-ins for the task's student classes, first on the judge's class path; null to run the tree's own classes. */
+    private Path standIns;
+    /** The worker's set-up (a Containment file) the stand-ins ask; null when there are none. */
+    private Path workerSetup;
+    /** The grade's deadline as a wall-clock time (milliseconds since the epoch), for the judge's calls to the worker. */
+    private long deadlineMillis;
     /** The test JVMs started so far, for naming each one's events file apart. */
     private static final java.util.concurrent.atomic.AtomicLong LAUNCHES = new java.util.concurrent.atomic.AtomicLong();
 
@@ -85,6 +89,7 @@ public final class TestProcess {
      */
     TestProcess withDeadline(long nanoTime, String why) {
         this.deadline = nanoTime;
+        this.deadlineMillis = nanoTime == Long.MAX_VALUE ? 0 : System.currentTimeMillis() + (nanoTime - System.nanoTime()) / 1_000_000;
         this.pastDeadline = why;
         return this;
     }
@@ -96,11 +101,12 @@ public final class TestProcess {
     }
 
     /**
-     * Runs the test JVMs in {@code sandbox}: its working folder, as its user, with the classes handed
-     * over in memory rather than on a class path the student's code could read.
+     * The judge: the tests run with the stand-ins in {@code standIns} first, which ask the worker that
+     * {@code workerSetup} (a {@link ray.grading.judge.Containment} file) starts; this JVM runs no student class.
      */
-    TestProcess inSandbox(Sandbox sandbox) {
-        this.sandbox = sandbox;
+    TestProcess judging(Path standIns, Path workerSetup) {
+        this.standIns = standIns;
+        this.workerSetup = workerSetup;
         return this;
     }
 
@@ -268,12 +274,10 @@ public final class TestProcess {
         return String.join(";", entries);
     }
 
-    /**
-     * A new events file for one test JVM: in the sandbox's run folder (the JVM's user writes it) or
-     * the work folder, named apart from every other JVM's.
-     */
+    /** A new events file for one test JVM, in the grader's work folder, named apart from every other JVM's. */
     private Path eventsFile(String attempt) throws IOException {
-        Path folder = sandbox == null ? workDir : sandbox.runFolder();
+        Path folder = workDir;
+        Files.createDirectories(folder);
         Path events = folder.resolve("events-" + LAUNCHES.incrementAndGet() + "-" + attempt + ".jsonl");
         Files.deleteIfExists(events);
         return events;
@@ -282,15 +286,20 @@ public final class TestProcess {
     private Process launch(Path events, Integer task, Set<String> skip, boolean listOnly, String unfinished) throws IOException {
         String self = Path.of(java.net.URI.create(
                 TestRunnerMain.class.getProtectionDomain().getCodeSource().getLocation().toString())).toString();
-        String fullClasspath = classesDir + File.pathSeparator + classpath + File.pathSeparator + self;
-        List<String> options = new ArrayList<>(List.of(HEAP, "-Djava.awt.headless=true", "-D" + SKIP_AFTER_TIMEOUT + "=true",
-                "-D" + UNFINISHED + "=" + unfinished));
+        String fullClasspath = (standIns != null ? standIns + File.pathSeparator : "") + classesDir + File.pathSeparator + classpath
+                + File.pathSeparator + self;
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), HEAP,
+                "-Djava.awt.headless=true", "-D" + SKIP_AFTER_TIMEOUT + "=true", "-D" + UNFINISHED + "=" + unfinished));
         if (!includeUngraded) {
             // Checking a whole tree (the ungraded tests too) runs long tests: those keep the defaults.
-            options.addAll(1, SHORT_LIVED_JVM);
+            command.addAll(1, SHORT_LIVED_JVM);
         }
-        List<String> command = new ArrayList<>(options);
-        command.add(0, Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        if (workerSetup != null && !listOnly) {
+            command.add("-D" + ray.grading.judge.Judge.WORKER_PROPERTY + "=" + workerSetup);
+            if (deadlineMillis > 0) {
+                command.add("-D" + ray.grading.judge.Judge.DEADLINE_PROPERTY + "=" + deadlineMillis);
+            }
+        }
         command.addAll(List.of("-cp", fullClasspath, TestRunnerMain.class.getName(), events.toString()));
         if (task != null) {
             command.add("--task");
@@ -310,29 +319,9 @@ public final class TestProcess {
                 .collect(java.util.stream.Collectors.toList()) : testClasses());
         Path output = workDir.resolve("test-output.txt");
         Files.createDirectories(workDir);
-        if (sandbox == null) {
-            // Tests run in the tree's folder, so that relative paths such as scenes/ resolve there.
-            return new ProcessBuilder(command).directory(projectDir.toFile()).redirectErrorStream(true)
-                    .redirectOutput(ProcessBuilder.Redirect.appendTo(output.toFile())).start();
-        }
-        int main = command.indexOf(TestRunnerMain.class.getName());
-        ProcessBuilder builder = new ProcessBuilder(sandbox.command(options, fullClasspath, TestRunnerMain.class.getName(),
-                command.subList(main + 1, command.size()))).directory(sandbox.tree().toFile()).redirectErrorStream(true)
-                .redirectOutput(ProcessBuilder.Redirect.appendTo(output.toFile()));
-        sandbox.environment(builder.environment());
-        Process child = builder.start();
-        sandbox.started(child);
-        // The classes go through the pipe while the JVM reads them; a JVM that dies early just closes it.
-        Thread feeder = new Thread(() -> {
-            try (java.io.OutputStream in = child.getOutputStream()) {
-                Sandbox.writeClasses(fullClasspath, in);
-            } catch (IOException e) {
-                // The JVM ended before it read everything: its exit is reported as for any crash.
-            }
-        }, "ray1-class-feeder");
-        feeder.setDaemon(true);
-        feeder.start();
-        return child;
+        // Tests run in the tree's folder, so that relative paths such as scenes/ resolve there.
+        return new ProcessBuilder(command).directory(projectDir.toFile()).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.appendTo(output.toFile())).start();
     }
 
     /** Waits for the child, stopping it when one test runs past the hard limit; false when it had to be stopped. */
@@ -340,11 +329,9 @@ public final class TestProcess {
         try {
             return watchUntilEnd(child, events);
         } finally {
-            if (sandbox != null) {
-                sandbox.ended(child);
-                // Nothing the tests started outlives them: the next JVM, and the results, come after.
-                sandbox.endStrayProcesses();
-            }
+            // The judge ends its worker; a judge that had to be stopped leaves that to this, and to the sandbox.
+            child.descendants().forEach(ProcessHandle::destroyForcibly);
+            child.destroyForcibly();
         }
     }
 
@@ -353,9 +340,6 @@ public final class TestProcess {
         long sizeSeen = -1;
         long lastProgress = System.nanoTime();
         while (!child.waitFor(200, TimeUnit.MILLISECONDS)) {
-            if (sandbox != null) {
-                sandbox.watch(child);
-            }
             if (System.nanoTime() > deadline) {
                 child.destroyForcibly().waitFor();
                 deadlineReached = true;

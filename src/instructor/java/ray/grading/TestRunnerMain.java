@@ -81,12 +81,18 @@ public final class TestRunnerMain {
         try (Writer events = Files.newBufferedWriter(eventsFile, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
                 StandardOpenOption.APPEND)) {
             TestRunnerMain runner = new TestRunnerMain(events, includeUngraded);
+            // When grading, the stand-ins of the task's student classes ask the worker (ray.grading.judge).
+            ray.grading.judge.Judge.start();
             // System.exit in a test ends the JVM; say which test did it before it goes.
             Runtime.getRuntime().addShutdownHook(new Thread(runner::reportExitDuringTest));
             if (!listOnly) {
                 runner.watchForStuckTests();
             }
-            runner.run(classes, task, skip, listOnly);
+            try {
+                runner.run(classes, task, skip, listOnly);
+            } finally {
+                ray.grading.judge.Judge.stop();
+            }
             runner.write(Map.of("event", "done"));
         }
         // Stray threads of timed-out tests must not keep this JVM alive.

@@ -104,30 +104,88 @@ public final class Renderer {
         int height = plan.window().height;
         Image image = new Image(width, height);
         PixelKinds kinds = recordKinds ? new PixelKinds(width, height) : null;
-        AtomicInteger nextRow = new AtomicInteger();
-        List<CountingShading> shadings = new ArrayList<>();
-        List<Runnable> workers = new ArrayList<>();
         int workerCount = Math.min(threads, height);
+        List<CountingShading> shadings = new ArrayList<>();
         for (int k = 0; k < workerCount; k++) {
-            CountingShading shading = new CountingShading(plan, recordKinds);
-            shadings.add(shading);
-            workers.add(() -> {
+            shadings.add(new CountingShading(plan, recordKinds));
+        }
+        if (AnswerRounds.active()) {
+            renderInRounds(shadings, image, kinds);
+        } else {
+            AtomicInteger nextRow = new AtomicInteger();
+            runWorkers(workerCount, k -> {
                 // A pixel's samples' votes, per kind: one array per worker, only when recording.
                 int[] votes = recordKinds ? new int[SurfaceKind.count()] : null;
-                try {
-                    for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
-                        renderRow(shading, image, j, kinds, votes);
-                        rowsDone.incrementAndGet();
+                for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
+                    renderRow(shadings.get(k), image, j, kinds, votes, null);
+                    rowsDone.incrementAndGet();
+                }
+            }, () -> nextRow.set(height));
+        }
+        RayStats total = new RayStats();
+        shadings.forEach(t -> total.add(t.stats()));
+        int n = plan.gridSide();
+        return new RenderResult(image, kinds, plan, total, n * n, workerCount, (System.nanoTime() - startNanos) / 1e9);
+    }
+
+    /**
+     * The render when answers may come late ({@link AnswerRounds}: while grading): each pixel is a
+     * computation, rendered again in the next round until it used no guessed answer. Each worker keeps
+     * its rows and its shading (the same copies of the scene's surfaces) from round to round, so that a
+     * pixel asks the same questions of the same objects each time.
+     */
+    private void renderInRounds(List<CountingShading> shadings, Image image, PixelKinds kinds) {
+        int workerCount = shadings.size();
+        int height = image.height();
+        boolean[] pending = new boolean[image.width() * height];
+        java.util.Arrays.fill(pending, true);
+        try {
+            for (int round = 1; ; round++) {
+                AtomicInteger left = new AtomicInteger();
+                long t0 = System.nanoTime();
+                runWorkers(workerCount, k -> {
+                    int[] votes = kinds != null ? new int[SurfaceKind.count()] : null;
+                    for (int j = k; j < height; j += workerCount) {
+                        left.addAndGet(renderRow(shadings.get(k), image, j, kinds, votes, pending));
                     }
+                }, () -> { });
+                if (Boolean.getBoolean("ray1.debugRounds")) {
+                    System.err.printf("pass %d: %.3f s, %d pending%n", round, (System.nanoTime() - t0) / 1e9, left.get());
+                }
+                if (left.get() == 0) {
+                    rowsDone.set(height);
+                    return;
+                }
+                if (!AnswerRounds.fetch() || round >= AnswerRounds.MAX_ROUNDS) {
+                    throw new IllegalStateException("the render's answers never settled after " + round + " rounds");
+                }
+            }
+        } finally {
+            AnswerRounds.forget();
+        }
+    }
+
+    /**
+     * Runs {@code work(k)} for k = 0 … n − 1, k = 0 on the calling thread and the others on the pool,
+     * and rethrows the first failure; {@code stopOthers} runs when one fails, so that the rest stop
+     * after their current row.
+     */
+    private static void runWorkers(int n, java.util.function.IntConsumer work, Runnable stopOthers) {
+        List<Runnable> workers = new ArrayList<>();
+        for (int k = 0; k < n; k++) {
+            int index = k;
+            workers.add(() -> {
+                try {
+                    work.accept(index);
                 } catch (RuntimeException | Error e) {
-                    nextRow.set(height); // the other workers stop after their current row
+                    stopOthers.run();
                     throw e;
                 }
             });
         }
         // The calling thread is one of the workers; the others come from the pool.
         List<Future<?>> others = new ArrayList<>();
-        for (Runnable worker : workers.subList(1, workerCount)) {
+        for (Runnable worker : workers.subList(1, n)) {
             others.add(WORKERS.submit(worker));
         }
         Throwable failure = null;
@@ -152,45 +210,82 @@ public final class Renderer {
         if (failure != null) {
             throw failure instanceof RuntimeException ? (RuntimeException) failure : new IllegalStateException(failure);
         }
-        RayStats total = new RayStats();
-        shadings.forEach(t -> total.add(t.stats()));
-        int n = plan.gridSide();
-        return new RenderResult(image, kinds, plan, total, n * n, workerCount, (System.nanoTime() - startNanos) / 1e9);
     }
 
     /**
      * Row {@code row} of the window, counted from its bottom, into the image of the window, and when
-     * {@code kinds} is not null into it too, each pixel by the kind most of its samples hit.
+     * {@code kinds} is not null into it too, each pixel by the kind most of its samples hit. With
+     * {@code pending} (answers may come late), only the pixels still pending, each as a computation
+     * of {@link AnswerRounds}: one that used a guess stays pending (and what it threw is dropped, since
+     * a guess may have caused it). Returns how many pixels of the row are still pending.
      */
-    private void renderRow(CountingShading shading, Image image, int row, PixelKinds kinds, int[] votes) {
+    private int renderRow(CountingShading shading, Image image, int row, PixelKinds kinds, int[] votes, boolean[] pending) {
+        int width = plan.window().width;
+        int stillPending = 0;
+        for (int x = 0; x < width; x++) {
+            if (pending == null) {
+                image.set(x, row, pixel(shading, x, row, votes));
+                if (kinds != null) {
+                    kinds.set(x, row, SurfaceKind.mostVoted(votes));
+                }
+                continue;
+            }
+            int at = row * width + x;
+            if (!pending[at]) {
+                continue;
+            }
+            Vec3 color;
+            AnswerRounds.begin();
+            try {
+                if (votes != null) {
+                    java.util.Arrays.fill(votes, 0);
+                }
+                color = pixel(shading, x, row, votes);
+            } catch (RuntimeException | Error e) {
+                if (AnswerRounds.end()) {
+                    throw e;
+                }
+                stillPending++;
+                continue;
+            }
+            if (!AnswerRounds.end()) {
+                stillPending++;
+                continue;
+            }
+            image.set(x, row, color);
+            if (kinds != null) {
+                kinds.set(x, row, SurfaceKind.mostVoted(votes));
+            }
+            pending[at] = false;
+        }
+        return stillPending;
+    }
+
+    /** The color of pixel {@code x} of row {@code row} of the window: its samples averaged, each sample's kind voted into {@code votes}. */
+    private Vec3 pixel(CountingShading shading, int x, int row, int[] votes) {
         Camera camera = scene.getCamera();
         int width = scene.getWidth();
         int height = scene.getHeight();
         PixelWindow window = plan.window();
-        int x0 = window.x;
+        int i = window.x + x;
         int j = window.firstRowFromBottom(height) + row;
         int n = plan.gridSide();
         SamplePattern pattern = plan.pattern();
         double weight = 1.0 / (n * n);
-        for (int i = x0; i < x0 + window.width; i++) {
-            double r = 0, g = 0, b = 0;
-            for (int a = 0; a < n; a++) {
-                for (int c = 0; c < n; c++) {
-                    double u = (i + pattern.x(i, j, a, c, n)) / width;
-                    double v = (j + pattern.y(i, j, a, c, n)) / height;
-                    Vec3 radiance = shading.cameraRadiance(camera.generateRay(u, v));
-                    if (votes != null) {
-                        votes[shading.cameraKind().ordinal()]++;
-                    }
-                    r += radiance.x;
-                    g += radiance.y;
-                    b += radiance.z;
+        double r = 0, g = 0, b = 0;
+        for (int a = 0; a < n; a++) {
+            for (int c = 0; c < n; c++) {
+                double u = (i + pattern.x(i, j, a, c, n)) / width;
+                double v = (j + pattern.y(i, j, a, c, n)) / height;
+                Vec3 radiance = shading.cameraRadiance(camera.generateRay(u, v));
+                if (votes != null) {
+                    votes[shading.cameraKind().ordinal()]++;
                 }
-            }
-            image.set(i - x0, row, new Vec3(r * weight, g * weight, b * weight));
-            if (kinds != null) {
-                kinds.set(i - x0, row, SurfaceKind.mostVoted(votes));
+                r += radiance.x;
+                g += radiance.y;
+                b += radiance.z;
             }
         }
+        return new Vec3(r * weight, g * weight, b * weight);
     }
 }

@@ -1,0 +1,153 @@
+package ray.grading;
+
+import com.sun.source.tree.ClassTree;
+import com.sun.source.tree.CompilationUnitTree;
+import com.sun.source.tree.MethodTree;
+import com.sun.source.tree.Tree;
+import com.sun.source.tree.VariableTree;
+import com.sun.source.util.JavacTask;
+import com.sun.source.util.SourcePositions;
+import com.sun.source.util.Trees;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.net.URI;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Collectors;
+import javax.tools.JavaCompiler;
+import javax.tools.SimpleJavaFileObject;
+import javax.tools.ToolProvider;
+
+/**
+ * The judge's stand-in for a student class, written from the student's file itself (the handout's
+ * version of it, as {@link SolutionMarkers} makes it): the same package, imports, class name,
+ * superclass and constructors, with the body of the method that holds the {@code TODO(Task N)}
+ * comment replaced by a call to the worker (ray.grading.judge.StudentCalls), and three members added:
+ * the stand-in's bookkeeping, a complete() that notes it ran, and the accessor of ray.grading.judge.StandIn.
+ * So the stand-ins follow the student files with no list to keep: a new task's file gets its
+ * stand-in as long as its method is one StudentCalls can forward ({@link #FORWARDS}).
+ */
+final class StandInSources {
+    /** The student methods the judge can forward, by name and parameter count, and StudentCalls' method for each. */
+    static final Map<String, String> FORWARDS = Map.of("intersect/2", "intersect", "generateRay/2", "generateRay", "getTexColor/2", "texColor");
+
+    private StandInSources() {
+    }
+
+    /** The stand-in's source for the student file {@code path} whose handout version is {@code stub}. */
+    static String of(String stub, String path) {
+        JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
+        if (compiler == null) {
+            throw new IllegalStateException("no Java compiler in this runtime: grading needs a JDK");
+        }
+        SimpleJavaFileObject file = new SimpleJavaFileObject(URI.create("string:///" + path), javax.tools.JavaFileObject.Kind.SOURCE) {
+            @Override
+            public CharSequence getCharContent(boolean ignoreEncodingErrors) {
+                return stub;
+            }
+        };
+        JavacTask task = (JavacTask) compiler.getTask(null, null, d -> { }, List.of("--release", "17", "-proc:none"), null, List.of(file));
+        CompilationUnitTree unit;
+        try {
+            unit = task.parse().iterator().next();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        SourcePositions positions = Trees.instance(task).getSourcePositions();
+        String className = path.substring(path.lastIndexOf('/') + 1).replace(".java", "");
+        ClassTree type = null;
+        for (Tree t : unit.getTypeDecls()) {
+            if (t instanceof ClassTree && ((ClassTree) t).getSimpleName().contentEquals(className)) {
+                type = (ClassTree) t;
+            }
+        }
+        if (type == null) {
+            throw new IllegalStateException(path + " declares no class " + className);
+        }
+        MethodTree studentMethod = null;
+        for (Tree member : type.getMembers()) {
+            if (member instanceof MethodTree && ((MethodTree) member).getBody() != null) {
+                MethodTree m = (MethodTree) member;
+                String body = stub.substring((int) positions.getStartPosition(unit, m), (int) positions.getEndPosition(unit, m));
+                if (body.contains("TODO(Task")) {
+                    if (studentMethod != null) {
+                        throw new IllegalStateException(path + " has two methods with a TODO(Task N): a stand-in forwards one");
+                    }
+                    studentMethod = m;
+                }
+            }
+        }
+        if (studentMethod == null) {
+            throw new IllegalStateException(path + " has no method with a TODO(Task N) comment");
+        }
+        List<String> parameters = studentMethod.getParameters().stream().map(v -> ((VariableTree) v).getName().toString())
+                .collect(Collectors.toList());
+        String key = studentMethod.getName() + "/" + parameters.size();
+        String forward = FORWARDS.get(key);
+        if (forward == null) {
+            throw new IllegalStateException(path + ": grading cannot forward " + studentMethod.getName() + " with " + parameters.size()
+                    + " parameters to the worker; teach ray.grading.judge.StudentCalls to");
+        }
+        boolean surface = forward.equals("intersect");
+        // Edits by position, made from the end so that earlier positions stay valid.
+        TreeMap<Integer, String[]> edits = new TreeMap<>();
+        int classEnd = (int) positions.getEndPosition(unit, type) - 1;
+        edits.put(classEnd, new String[] {"", members(surface)});
+        long bodyStart = positions.getStartPosition(unit, studentMethod.getBody());
+        long bodyEnd = positions.getEndPosition(unit, studentMethod.getBody());
+        edits.put((int) bodyStart, new String[] {stub.substring((int) bodyStart, (int) bodyEnd),
+                "{\n        return StudentCalls." + forward + "(this, " + String.join(", ", parameters) + ");\n    }"});
+        List<? extends Tree> interfaces = type.getImplementsClause();
+        Tree after = interfaces.isEmpty() ? type.getExtendsClause() : interfaces.get(interfaces.size() - 1);
+        if (after == null) {
+            throw new IllegalStateException(path + ": " + className + " extends no framework class");
+        }
+        edits.put((int) positions.getEndPosition(unit, after),
+                new String[] {"", (interfaces.isEmpty() ? " implements " : ", ") + "StandIn"});
+        // Imports rather than qualified names: a parameter named ray hides the package ray.
+        int importsAt = unit.getImports().isEmpty() ? (int) positions.getEndPosition(unit, unit.getPackage())
+                : (int) positions.getEndPosition(unit, unit.getImports().get(unit.getImports().size() - 1));
+        edits.put(importsAt, new String[] {"", "\nimport ray.grading.judge.StandIn;\nimport ray.grading.judge.StandInState;"
+                + "\nimport ray.grading.judge.StudentCalls;"});
+        StringBuilder source = new StringBuilder(stub);
+        for (Map.Entry<Integer, String[]> edit : edits.descendingMap().entrySet()) {
+            int at = edit.getKey();
+            source.replace(at, at + edit.getValue()[0].length(), edit.getValue()[1]);
+        }
+        return "// The judge's stand-in for " + path + ", written by ray.grading.StandInSources: do not edit.\n" + source;
+    }
+
+    private static String members(boolean surface) {
+        List<String> lines = new ArrayList<>();
+        lines.add("");
+        lines.add("    private StandInState ray1State;");
+        lines.add("");
+        lines.add("    @Override");
+        if (surface) {
+            lines.add("    public ray.surface.Surface complete() {");
+            lines.add("        ray.surface.Surface done = super.complete();");
+            lines.add("        ray1StandIn().completed();");
+            lines.add("        return done;");
+        } else {
+            lines.add("    public void complete() {");
+            lines.add("        super.complete();");
+            lines.add("        ray1StandIn().completed();");
+        }
+        lines.add("    }");
+        lines.add("");
+        lines.add("    @Override");
+        lines.add("    public synchronized StandInState ray1StandIn() {");
+        lines.add("        if (ray1State == null) {");
+        lines.add("            ray1State = new StandInState(this);");
+        lines.add("        } else if (ray1State.owner() != this) {");
+        lines.add("            // A clone (the framework's moved copy): a twin of its own.");
+        lines.add("            ray1State = ray1State.forClone(this);");
+        lines.add("        }");
+        lines.add("        return ray1State;");
+        lines.add("    }");
+        lines.add("");
+        return String.join("\n", lines);
+    }
+}

@@ -1,0 +1,122 @@
+package ray.grading.judge;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
+
+/**
+ * How the judge starts a worker and ends it with everything it started, as the grader set it up
+ * (ray.grading.WorkerSandbox writes it): the command, the environment, and the user the worker runs
+ * as, if one. Ending a worker ends its process tree, and then every process of that user, which
+ * nothing the student's code does can escape: a process cannot leave its user, and the user belongs
+ * to this grading alone. When the command starts the worker in a PID namespace of its own, ending
+ * the command ends the namespace and all in it at once.
+ *
+ * <p>The file: lines {@code command ARG}, {@code env NAME=VALUE} and {@code user NAME}, in any order;
+ * the command's arguments in their order.
+ */
+public final class Containment {
+    private final List<String> command;
+    private final Map<String, String> environment;
+    private final String user;
+
+    public Containment(List<String> command, Map<String, String> environment, String user) {
+        this.command = List.copyOf(command);
+        this.environment = new LinkedHashMap<>(environment);
+        this.user = user;
+    }
+
+    /** The setup the grader wrote to {@code file}. */
+    public static Containment read(Path file) throws IOException {
+        List<String> command = new ArrayList<>();
+        Map<String, String> environment = new LinkedHashMap<>();
+        String user = null;
+        for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
+            if (line.startsWith("command ")) {
+                command.add(line.substring("command ".length()));
+            } else if (line.startsWith("env ")) {
+                String entry = line.substring("env ".length());
+                int equals = entry.indexOf('=');
+                environment.put(entry.substring(0, equals), entry.substring(equals + 1));
+            } else if (line.startsWith("user ")) {
+                user = line.substring("user ".length());
+            } else if (!line.isBlank()) {
+                throw new IOException(file + ": a line the judge does not know: " + line);
+            }
+        }
+        if (command.isEmpty()) {
+            throw new IOException(file + " names no command for the worker");
+        }
+        return new Containment(command, environment, user);
+    }
+
+    /** Writes this setup for {@link #read}. */
+    public void write(Path file) throws IOException {
+        List<String> lines = new ArrayList<>();
+        command.forEach(arg -> lines.add("command " + arg));
+        environment.forEach((name, value) -> lines.add("env " + name + "=" + value));
+        if (user != null) {
+            lines.add("user " + user);
+        }
+        Files.write(file, lines, StandardCharsets.UTF_8);
+    }
+
+    List<String> command() {
+        return command;
+    }
+
+    /** The worker's environment: nothing of the judge's that changes a JVM, and what the setup says. */
+    void environment(Map<String, String> env) {
+        env.keySet().removeIf(k -> k.startsWith("JAVA_TOOL_OPTIONS") || k.equals("_JAVA_OPTIONS") || k.equals("JDK_JAVA_OPTIONS")
+                || k.equals("CLASSPATH"));
+        env.putAll(environment);
+    }
+
+    /** Ends the worker's process, its descendants, and every process of the worker's user. */
+    void end(Process process) {
+        List<ProcessHandle> tree = process.descendants().collect(Collectors.toList());
+        process.destroyForcibly();
+        tree.forEach(ProcessHandle::destroyForcibly);
+        try {
+            process.waitFor(5, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        endUsersProcesses();
+    }
+
+    /** Every process of the worker's user, ended (a detached or stopped one too); none when there is no such user. */
+    public int endUsersProcesses() {
+        if (user == null) {
+            return 0;
+        }
+        int ended = 0;
+        for (int round = 0; round < 50; round++) {
+            List<ProcessHandle> left = ProcessHandle.allProcesses()
+                    .filter(p -> p.info().user().map(user::equals).orElse(false)).collect(Collectors.toList());
+            if (left.isEmpty()) {
+                break;
+            }
+            for (ProcessHandle p : left) {
+                if (p.destroyForcibly()) {
+                    ended++;
+                }
+            }
+            for (ProcessHandle p : left) {
+                try {
+                    p.onExit().get(200, TimeUnit.MILLISECONDS);
+                } catch (Exception e) {
+                    // A zombie waiting for its parent, or one just forked: the next round looks again.
+                }
+            }
+        }
+        return ended;
+    }
+}

@@ -1,0 +1,151 @@
+package ray.grading.judge;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.camera.Camera;
+import ray.grading.wire.Protocol;
+import ray.grading.wire.Records;
+import ray.grading.wire.ThrownData;
+import ray.grading.wire.WireError;
+import ray.grading.wire.WireIn;
+import ray.math.Vec3;
+import ray.shading.Texture;
+import ray.surface.Surface;
+
+/**
+ * What a stand-in's student method does: asks the worker to run the student's method on the
+ * stand-in's twin, and returns what it returned, with the record and the ray changed as the
+ * student's code changed them, or throws what it threw ({@link Rethrown}). An answer is applied only
+ * once it was read whole.
+ */
+public final class StudentCalls {
+    private StudentCalls() {
+    }
+
+    /** The student's {@code intersect(out, ray)} on {@code self}'s twin: in a computation's round from its answers, else at once. */
+    public static boolean intersect(Surface self, IntersectionRecord out, Ray ray) {
+        Rounds rounds = Rounds.deferring();
+        return rounds != null ? rounds.intersect((StandIn) self, out, ray) : intersectNow(self, out, ray);
+    }
+
+    /** The student's {@code intersect(out, ray)} on {@code self}'s twin, asked at once. */
+    static boolean intersectNow(Surface self, IntersectionRecord out, Ray ray) {
+        Worker worker = Worker.get();
+        IntersectionRecord changed = new IntersectionRecord();
+        Ray changedRay = ray.copy();
+        Outcome outcome = worker.call(m -> {
+            m.body.u8(Protocol.OP_INTERSECT);
+            m.target((StandIn) self);
+            Records.writeRay(m.body, ray);
+            Records.write(m.body, out, m);
+        }, in -> {
+            int status = in.u8();
+            if (status == Protocol.THREW) {
+                return Outcome.threw(ThrownData.read(in));
+            }
+            expect(status);
+            boolean hit = in.bool();
+            changed.set(out);
+            int mask = Records.readChanges(in, changed, worker.objects().reader());
+            int rayMask = Records.readRayChanges(in, changedRay);
+            return Outcome.intersected(hit, mask, rayMask);
+        });
+        outcome.rethrow(self);
+        Records.apply(outcome.mask, changed, out);
+        if ((outcome.rayMask & Records.START) != 0) {
+            ray.start = changedRay.start;
+        }
+        if ((outcome.rayMask & Records.END) != 0) {
+            ray.end = changedRay.end;
+        }
+        return outcome.hit;
+    }
+
+    /** The student's {@code generateRay(u, v)} on {@code self}'s twin. */
+    public static Ray generateRay(Camera self, double u, double v) {
+        Rounds rounds = Rounds.deferring();
+        if (rounds != null) {
+            return rounds.generateRay((StandIn) self, u, v);
+        }
+        Worker worker = Worker.get();
+        Outcome outcome = worker.call(m -> {
+            m.body.u8(Protocol.OP_GENERATE_RAY);
+            m.target((StandIn) self);
+            m.body.f64(u).f64(v);
+        }, in -> {
+            int status = in.u8();
+            if (status == Protocol.THREW) {
+                return Outcome.threw(ThrownData.read(in));
+            }
+            expect(status);
+            return Outcome.value(Records.readRayOrNull(in));
+        });
+        outcome.rethrow(self);
+        return (Ray) outcome.value;
+    }
+
+    /** The student's {@code getTexColor(u, v)} on {@code self}'s twin. */
+    public static Vec3 texColor(Texture self, double u, double v) {
+        Rounds rounds = Rounds.deferring();
+        if (rounds != null) {
+            return rounds.texColor((StandIn) self, u, v);
+        }
+        Worker worker = Worker.get();
+        Outcome outcome = worker.call(m -> {
+            m.body.u8(Protocol.OP_TEX_COLOR);
+            m.target((StandIn) self);
+            m.body.f64(u).f64(v);
+        }, in -> {
+            int status = in.u8();
+            if (status == Protocol.THREW) {
+                return Outcome.threw(ThrownData.read(in));
+            }
+            expect(status);
+            return Outcome.value(in.vec());
+        });
+        outcome.rethrow(self);
+        return (Vec3) outcome.value;
+    }
+
+    private static void expect(int status) {
+        if (status != Protocol.RETURNED) {
+            throw new WireError("an answer of status " + status);
+        }
+    }
+
+    /** An answer as read: returned (with what changed) or threw. */
+    static final class Outcome {
+        final boolean hit;
+        final int mask;
+        final int rayMask;
+        final Object value;
+        final ThrownData thrown;
+
+        private Outcome(boolean hit, int mask, int rayMask, Object value, ThrownData thrown) {
+            this.hit = hit;
+            this.mask = mask;
+            this.rayMask = rayMask;
+            this.value = value;
+            this.thrown = thrown;
+        }
+
+        static Outcome intersected(boolean hit, int mask, int rayMask) {
+            return new Outcome(hit, mask, rayMask, null, null);
+        }
+
+        static Outcome value(Object value) {
+            return new Outcome(false, 0, 0, value, null);
+        }
+
+        static Outcome threw(ThrownData thrown) {
+            return new Outcome(false, 0, 0, null, thrown);
+        }
+
+        /** Throws what the student's code threw, if it did. */
+        void rethrow(Object self) {
+            if (thrown != null) {
+                throw Rethrown.sneaky(Rethrown.of(thrown, self.getClass()));
+            }
+        }
+    }
+}

@@ -1,0 +1,221 @@
+package ray.grading.judge;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import java.util.function.Function;
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.grading.wire.Frames;
+import ray.grading.wire.Protocol;
+import ray.grading.wire.Records;
+import ray.grading.wire.ThrownData;
+import ray.grading.wire.WireError;
+import ray.grading.wire.WireIn;
+import ray.grading.wire.WireOut;
+import ray.surface.Surface;
+
+/**
+ * The judge's worker: started when a stand-in first needs it, as the grader's {@link Containment}
+ * says, and asked one call at a time. While a call runs, the student's code may call back a
+ * judge-side surface (a group's child), which this class runs and answers. Anything a worker does
+ * wrong (ending, stalling, answering out of format) ends it, and the next call starts a fresh one;
+ * its objects are then sent anew.
+ */
+final class Worker {
+    /** Seconds any one call may take at most, whatever else limits it (a test's own limit interrupts sooner). */
+    static final long CALL_LIMIT_SECONDS = 120;
+    /** Seconds a worker may take to start. */
+    private static final long START_LIMIT_SECONDS = 60;
+
+    private static Worker current;
+
+    private final Containment containment;
+    private final JudgeObjects objects = new JudgeObjects(new Certification());
+    private WorkerProcess process;
+
+    private Worker(Containment containment) {
+        this.containment = containment;
+    }
+
+    /** The worker of this judge, as the grader set it up. */
+    static synchronized Worker get() {
+        if (current == null) {
+            String setup = System.getProperty(Judge.WORKER_PROPERTY);
+            if (setup == null) {
+                throw new IllegalStateException("a stand-in for a student class was used, but no worker is set up (" + Judge.WORKER_PROPERTY + ")");
+            }
+            try {
+                current = new Worker(Containment.read(Path.of(setup)));
+            } catch (IOException e) {
+                throw new IllegalStateException("cannot read the worker's setup: " + e.getMessage(), e);
+            }
+        }
+        return current;
+    }
+
+    /** For the grader's own tests: a worker started by {@code containment}. */
+    static synchronized void use(Containment containment) {
+        if (current != null) {
+            current.end();
+        }
+        current = new Worker(containment);
+    }
+
+    /** Ends the worker, if this judge ever started one. */
+    static synchronized void stopIfStarted() {
+        if (current != null) {
+            current.end();
+        }
+    }
+
+    JudgeObjects objects() {
+        return objects;
+    }
+
+    /** When the present call must be answered by (System.nanoTime). */
+    private static long callDeadline() {
+        long limit = System.nanoTime() + TimeUnit.SECONDS.toNanos(CALL_LIMIT_SECONDS);
+        String gradeEnds = System.getProperty(Judge.DEADLINE_PROPERTY);
+        if (gradeEnds != null) {
+            long left = Long.parseLong(gradeEnds) - System.currentTimeMillis();
+            limit = Math.min(limit, System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(Math.max(0, left)));
+        }
+        return limit;
+    }
+
+    private void ensureStarted() {
+        if (process == null || !process.alive()) {
+            if (process != null) {
+                end();
+            }
+            long deadline = Math.min(callDeadline(), System.nanoTime() + TimeUnit.SECONDS.toNanos(START_LIMIT_SECONDS));
+            process = WorkerProcess.start(containment.command(), containment, deadline);
+        }
+    }
+
+    /**
+     * One call: {@code write} writes it (its definitions come along), {@code read} reads the answer
+     * whole. Whatever goes wrong on the worker's side is a {@link WorkerFailure}, after which the
+     * worker is gone.
+     */
+    synchronized <T> T call(Consumer<JudgeObjects.Message> write, Function<WireIn, T> read) {
+        ensureStarted();
+        try {
+            JudgeObjects.Message message = objects.new Message();
+            write.accept(message);
+            process.send(Protocol.CALL, message.assembled());
+            WireIn answer = await(Protocol.ANSWER);
+            T result = read.apply(answer);
+            answer.end();
+            return result;
+        } catch (WorkerFailure e) {
+            end();
+            throw e;
+        } catch (WireError e) {
+            end();
+            throw new WorkerFailure("the worker answered out of format (" + e.getMessage() + ")");
+        } catch (InterruptedException e) {
+            end();
+            Thread.currentThread().interrupt();
+            throw new WorkerFailure(WorkerFailure.Kind.TIMED_OUT, "interrupted while your code ran (the test's time limit)");
+        }
+    }
+
+    /**
+     * One batch ({@link Rounds}): {@code write} writes it, {@code read} reads the answer whole. A batch
+     * runs no callback: judge-side answers come in its tables.
+     */
+    synchronized <T> T batch(Consumer<JudgeObjects.Message> write, Function<WireIn, T> read) {
+        ensureStarted();
+        try {
+            long t0 = System.nanoTime();
+            JudgeObjects.Message message = objects.new Message();
+            write.accept(message);
+            WireOut whole = message.assembled();
+            long t1 = System.nanoTime();
+            process.send(Protocol.BATCH, whole);
+            Frames.Frame frame = process.next(callDeadline());
+            long t2 = System.nanoTime();
+            if (Boolean.getBoolean("ray1.debugRounds")) {
+                System.err.printf("  batch: write %.3f s (%d bytes), worker %.3f s (%d bytes back)%n", (t1 - t0) / 1e9, whole.size(), (t2 - t1) / 1e9, frame.payload.length);
+            }
+            if (frame.type != Protocol.BATCH_ANSWER) {
+                throw new WorkerFailure("the worker sent a message of type " + frame.type + " for a batch");
+            }
+            WireIn answer = frame.reader();
+            T result = read.apply(answer);
+            answer.end();
+            return result;
+        } catch (WorkerFailure e) {
+            end();
+            throw e;
+        } catch (WireError e) {
+            end();
+            throw new WorkerFailure("the worker answered out of format (" + e.getMessage() + ")");
+        } catch (InterruptedException e) {
+            end();
+            Thread.currentThread().interrupt();
+            throw new WorkerFailure(WorkerFailure.Kind.TIMED_OUT, "interrupted while your code ran (the test's time limit)");
+        }
+    }
+
+    /** The worker's message of {@code type}, serving its callbacks until it comes. */
+    private WireIn await(int type) throws InterruptedException {
+        long deadline = callDeadline();
+        while (true) {
+            Frames.Frame frame = process.next(deadline);
+            if (frame.type == type) {
+                return frame.reader();
+            }
+            if (frame.type != Protocol.CALLBACK) {
+                throw new WorkerFailure("the worker sent a message of type " + frame.type + " out of turn");
+            }
+            serveCallback(frame.reader());
+        }
+    }
+
+    /** Runs the judge-side surface the student's code called and sends back what it did. */
+    private void serveCallback(WireIn in) {
+        Surface target = objects.readJudgeSurface(in.i32());
+        Ray ray = Records.readRay(in);
+        IntersectionRecord record = new IntersectionRecord();
+        Records.read(in, record, objects.reader());
+        in.end();
+        JudgeObjects.Message reply = objects.new Message();
+        IntersectionRecord before = new IntersectionRecord();
+        before.set(record);
+        double start = ray.start;
+        double end = ray.end;
+        boolean hit;
+        try {
+            hit = target.intersect(record, ray);
+        } catch (WorkerFailure e) {
+            throw e;
+        } catch (Throwable t) { // a judge-side surface's exception goes back through the student's code
+            reply.body.u8(Protocol.THREW);
+            ThrownData.of(t, "ray.grading.judge.").write(reply.body);
+            process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+            return;
+        }
+        reply.body.u8(Protocol.RETURNED).bool(hit);
+        Records.writeChanges(reply.body, Records.changes(before, record), record, reply);
+        Records.writeRayChanges(reply.body, Records.rayChanges(start, end, ray), ray);
+        process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+    }
+
+    /** Ends the worker and everything it started; the next call starts another. */
+    synchronized void end() {
+        if (process != null) {
+            process.end();
+            process = null;
+        }
+        objects.forget();
+    }
+
+    /** What the student's code printed in the running worker (the start of it). */
+    synchronized String printed() {
+        return process == null ? "" : process.printed();
+    }
+}

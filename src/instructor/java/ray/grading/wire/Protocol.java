@@ -1,0 +1,77 @@
+package ray.grading.wire;
+
+/**
+ * The messages between the judge (the grading process, which runs the tests and never a student
+ * class) and the worker (the process that runs the student's classes and nothing secret). The judge
+ * asks; the worker answers with plain data; the judge parses every answer strictly and decides
+ * everything itself.
+ *
+ * <p>Judge to worker: {@link #CALL} (definitions, then one call), {@link #BATCH} (definitions, then
+ * many calls whose answers may come together) and {@link #CALLBACK_ANSWER}. Worker to judge:
+ * {@link #READY} once started, {@link #ANSWER}, {@link #BATCH_ANSWER}, {@link #CALLBACK} (the
+ * student's code called a judge-side object, a group's child, during a call) and {@link #EXITING}
+ * (the student's code called System.exit during a call).
+ */
+public final class Protocol {
+    private Protocol() {
+    }
+
+    // Frame types, judge to worker.
+    public static final int CALL = 1;
+    public static final int BATCH = 2;
+    public static final int CALLBACK_ANSWER = 3;
+    // Frame types, worker to judge.
+    public static final int READY = 10;
+    public static final int ANSWER = 11;
+    public static final int BATCH_ANSWER = 12;
+    public static final int CALLBACK = 13;
+    public static final int EXITING = 14;
+
+    /** The first bytes of READY's payload: both sides must be built from the same grading code. */
+    public static final String VERSION = "ray1-grading-wire-1";
+
+    // Definitions, sent ahead of the calls that use them.
+    /** A twin: the student's class made by its no-argument constructor (handle, class name). */
+    public static final int DEF_TWIN = 1;
+    /** The framework's fields of a twin, in {@link FrameworkFields}' order (handle, values). */
+    public static final int DEF_STATE = 2;
+    /** The judge called complete() on the stand-in: the twin's complete() runs too (handle). */
+    public static final int DEF_COMPLETE = 3;
+    /** A surface on the judge's side that a twin holds (a group's child): handle, its bounds, whether certified. */
+    public static final int DEF_JUDGE = 4;
+    /** A texture image: id, width, height, then its 3·w·h linear values. */
+    public static final int DEF_IMAGE = 5;
+
+    // How an object is named in a message.
+    public static final int REF_NULL = 0;
+    /** A stand-in on the judge's side, its twin on the worker's. */
+    public static final int REF_TWIN = 1;
+    /** A judge-side surface, a proxy on the worker's side. */
+    public static final int REF_JUDGE = 2;
+    /** An object the student's code made that the judge never sent (worker to judge only): its class name. */
+    public static final int REF_FOREIGN = 3;
+
+    // Calls.
+    public static final int OP_INTERSECT = 1;
+    public static final int OP_GENERATE_RAY = 2;
+    public static final int OP_TEX_COLOR = 3;
+
+    // Answers.
+    public static final int RETURNED = 0;
+    public static final int THREW = 1;
+    /** Batches only: the call needs judge-side answers it was not given; asked again with them. */
+    public static final int NEED = 2;
+
+    // Limits on what the worker may send.
+    /** Characters of an exception's message kept. */
+    public static final int MAX_MESSAGE_BYTES = 16_000;
+    /** Bytes of a class, method or file name. */
+    public static final int MAX_NAME_BYTES = 512;
+    /** Frames of a stack trace kept, and causes followed. */
+    public static final int MAX_FRAMES = 64;
+    public static final int MAX_CAUSES = 4;
+    /** Entries of any table in one message. */
+    public static final int MAX_ENTRIES = 4_000_000;
+    /** Fields of a framework state, surfaces of a group. */
+    public static final int MAX_PARTS = 1_000_000;
+}

@@ -1,0 +1,145 @@
+package ray.grading.worker;
+
+import ray.IntersectionRecord;
+import ray.Ray;
+import ray.camera.Camera;
+import ray.grading.wire.Protocol;
+import ray.grading.wire.Records;
+import ray.grading.wire.ThrownData;
+import ray.grading.wire.WireError;
+import ray.grading.wire.WireIn;
+import ray.grading.wire.WireOut;
+import ray.math.Vec3;
+import ray.shading.Texture;
+import ray.surface.Surface;
+
+/**
+ * Runs one call of the judge's on a twin and writes its answer: what the student's method returned
+ * and what it changed (of the record and the ray), or what it threw. The call's arguments are read
+ * whole before the student's code runs; what the student's code does cannot reach this class's own
+ * parsing, and a message this class cannot parse ends the worker.
+ */
+final class WorkerCalls {
+    private final WorkerObjects objects;
+
+    WorkerCalls(WorkerObjects objects) {
+        this.objects = objects;
+    }
+
+    /** A CALL message: its definitions, then one call; the answer. */
+    WireOut call(WireIn in) {
+        objects.define(in);
+        WireOut answer = new WireOut();
+        try {
+            objects.settle();
+            int op = in.u8();
+            switch (op) {
+                case Protocol.OP_INTERSECT:
+                    intersect(in, answer);
+                    break;
+                case Protocol.OP_GENERATE_RAY:
+                    generateRay(in, answer);
+                    break;
+                case Protocol.OP_TEX_COLOR:
+                    texColor(in, answer);
+                    break;
+                default:
+                    throw new WireError("a call of kind " + op);
+            }
+        } catch (WorkerObjects.BrokenTwin b) {
+            threw(answer, b.why);
+        }
+        return answer;
+    }
+
+    /** The twin a call names: its first bytes. */
+    private int target(WireIn in) {
+        int kind = in.u8();
+        if (kind != Protocol.REF_TWIN) {
+            throw new WireError("a call on an object named by kind " + kind);
+        }
+        return in.i32();
+    }
+
+    private void intersect(WireIn in, WireOut answer) {
+        int handle = target(in);
+        Ray ray = Records.readRay(in);
+        IntersectionRecord out = new IntersectionRecord();
+        Records.read(in, out, objects);
+        in.end();
+        intersect(objects.twin(handle, Surface.class), out, ray, answer);
+    }
+
+    /** Runs intersect on the twin and writes its answer: returned, the record's and the ray's changes; or what it threw. */
+    void intersect(Surface twin, IntersectionRecord out, Ray ray, WireOut answer) {
+        IntersectionRecord before = new IntersectionRecord();
+        before.set(out);
+        double start = ray.start;
+        double end = ray.end;
+        boolean hit;
+        try {
+            hit = twin.intersect(out, ray);
+        } catch (Throwable t) { // whatever the student's code throws is its answer
+            threw(answer, t);
+            return;
+        }
+        answer.u8(Protocol.RETURNED).bool(hit);
+        Records.writeChanges(answer, Records.changes(before, out), out, objects);
+        Records.writeRayChanges(answer, Records.rayChanges(start, end, ray), ray);
+    }
+
+    private void generateRay(WireIn in, WireOut answer) {
+        int handle = target(in);
+        double u = in.f64();
+        double v = in.f64();
+        in.end();
+        generateRay(objects.twin(handle, Camera.class), u, v, answer);
+    }
+
+    void generateRay(Camera camera, double u, double v, WireOut answer) {
+        Ray ray;
+        try {
+            ray = camera.generateRay(u, v);
+        } catch (Throwable t) {
+            threw(answer, t);
+            return;
+        }
+        answer.u8(Protocol.RETURNED);
+        Records.writeRayOrNull(answer, ray);
+    }
+
+    private void texColor(WireIn in, WireOut answer) {
+        int handle = target(in);
+        double u = in.f64();
+        double v = in.f64();
+        in.end();
+        texColor(objects.twin(handle, Texture.class), u, v, answer);
+    }
+
+    void texColor(Texture texture, double u, double v, WireOut answer) {
+        Vec3 color;
+        try {
+            color = texture.getTexColor(u, v);
+        } catch (Throwable t) {
+            threw(answer, t);
+            return;
+        }
+        answer.u8(Protocol.RETURNED).vec(color);
+    }
+
+    /** What the student's code threw; a judge-side surface's exception, or a broken twin's, passes on as it was. */
+    static void threw(WireOut answer, Throwable t) {
+        if (t instanceof JudgeSurface.JudgeSideThrew) {
+            threw(answer, ((JudgeSurface.JudgeSideThrew) t).thrown);
+        } else if (t instanceof WorkerObjects.BrokenTwin) {
+            threw(answer, ((WorkerObjects.BrokenTwin) t).why);
+        } else {
+            threw(answer, ThrownData.of(t, WorkerMain.OWN_PACKAGE));
+        }
+    }
+
+    static void threw(WireOut answer, ThrownData thrown) {
+        answer.u8(Protocol.THREW);
+        thrown.write(answer);
+    }
+}
