@@ -17,6 +17,24 @@ public final class Affine {
         this.b = translation;
     }
 
+    /** The map with row-major linear part {@code linear} (9 numbers, copied) and translation {@code translation}. */
+    public static Affine of(double[] linear, Vec3 translation) {
+        if (linear.length != 9) {
+            throw new IllegalArgumentException("a linear part of " + linear.length + " numbers; expected 9");
+        }
+        return new Affine(linear.clone(), translation);
+    }
+
+    /** The linear part, row-major (a copy). */
+    public double[] linear() {
+        return a.clone();
+    }
+
+    /** The translation. */
+    public Vec3 translationPart() {
+        return b;
+    }
+
     public static Affine translation(Vec3 t) {
         return new Affine(IDENTITY.a, t);
     }

@@ -96,7 +96,8 @@ public final class Transformed extends Surface {
         return bounds().mayHit(ray.origin, ray.direction, ray.start, ray.end);
     }
 
-    private Ray toLocal(Ray ray) {
+    /** The ray in the placed surface's coordinates (same segment: t is the same on both sides, the direction is not renormalized). */
+    public Ray toLocal(Ray ray) {
         return new Ray(toLocal.applyToPoint(ray.origin), toLocal.applyToVector(ray.direction), ray.start, ray.end);
     }
 

@@ -16,6 +16,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.render.AnswerRounds;
 import ray.scene.ObjReader;
 import ray.testing.Points;
 import ray.testing.ProjectFolder;
@@ -53,38 +54,44 @@ public class TriangleHardCasesBonusTest {
     public void closedMeshHasNoCracksAtSharedEdgesAndVertices() {
         Vec3 center = new Vec3(0.6, -0.8, 0);
         IcosphereMesh mesh = new IcosphereMesh(center);
-        Random random = new Random(8_000_001);
         int rays = 5000;
-        int through = 0;
-        String example = "";
-        for (int i = 0; i < rays; i++) {
-            Vec3 origin = center.plus(randomInBall(random, 0.5));
-            Vec3 target;
-            String aim;
-            if (i % 4 == 0) {
-                int k = random.nextInt(mesh.vertices.size());
-                target = mesh.vertices.get(k);
-                aim = "vertex " + k + " " + target;
-            } else {
-                int[] edge = mesh.edges.get(random.nextInt(mesh.edges.size()));
-                Vec3 a = mesh.vertices.get(edge[0]);
-                Vec3 b = mesh.vertices.get(edge[1]);
-                target = a.plus(b.minus(a).times(0.05 + 0.9 * random.nextDouble()));
-                aim = "the edge from vertex " + edge[0] + " to vertex " + edge[1] + ", at " + target;
-            }
-            Ray ray = new Ray(origin, target.minus(origin));
-            boolean hit = false;
-            for (Triangle t : mesh.triangles) {
-                IntersectionRecord out = new IntersectionRecord();
-                if (t.intersect(out, ray) && Math.abs(out.t - 1) <= 1e-9) {
-                    hit = true;
-                    break;
+        // 1.6 million questions: asked together when grading (AnswerRounds), so the loop only computes.
+        Tally tally = AnswerRounds.exactly(() -> {
+            Random random = new Random(8_000_001);
+            int passedThrough = 0;
+            String firstExample = "";
+            for (int i = 0; i < rays; i++) {
+                Vec3 origin = center.plus(randomInBall(random, 0.5));
+                Vec3 target;
+                String aim;
+                if (i % 4 == 0) {
+                    int k = random.nextInt(mesh.vertices.size());
+                    target = mesh.vertices.get(k);
+                    aim = "vertex " + k + " " + target;
+                } else {
+                    int[] edge = mesh.edges.get(random.nextInt(mesh.edges.size()));
+                    Vec3 a = mesh.vertices.get(edge[0]);
+                    Vec3 b = mesh.vertices.get(edge[1]);
+                    target = a.plus(b.minus(a).times(0.05 + 0.9 * random.nextDouble()));
+                    aim = "the edge from vertex " + edge[0] + " to vertex " + edge[1] + ", at " + target;
+                }
+                Ray ray = new Ray(origin, target.minus(origin));
+                boolean hit = false;
+                for (Triangle t : mesh.triangles) {
+                    IntersectionRecord out = new IntersectionRecord();
+                    if (t.intersect(out, ray) && Math.abs(out.t - 1) <= 1e-9) {
+                        hit = true;
+                        break;
+                    }
+                }
+                if (!hit && passedThrough++ == 0) {
+                    firstExample = "the ray from " + origin + " aimed at " + aim;
                 }
             }
-            if (!hit && through++ == 0) {
-                example = "the ray from " + origin + " aimed at " + aim;
-            }
-        }
+            return new Tally(passedThrough, firstExample);
+        });
+        int through = tally.count;
+        String example = tally.example;
         if (through == rays) {
             fail("closed mesh: all " + rays + " rays aimed at points of a closed mesh missed every triangle (e.g. " + example
                     + "): this bonus needs ordinary hits to work first");
@@ -96,6 +103,17 @@ public class TriangleHardCasesBonusTest {
                     + " neighbors can both find a point of their shared edge a hair outside; a watertight test decides a shared"
                     + " edge the same way for both (Woop, Benthin and Wald, \"Watertight Ray/Triangle Intersection\", JCGT 2(1),"
                     + " 2013; docs/numerics.md)");
+        }
+    }
+
+    /** How many rays of a case went wrong, and the first of them. */
+    private static final class Tally {
+        final int count;
+        final String example;
+
+        Tally(int count, String example) {
+            this.count = count;
+            this.example = example;
         }
     }
 

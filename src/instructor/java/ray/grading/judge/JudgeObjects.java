@@ -13,7 +13,10 @@ import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.image.Image;
 import ray.math.Bounds;
+import ray.math.Affine;
+import ray.math.Vec3;
 import ray.surface.Surface;
+import ray.surface.Transformed;
 
 /**
  * The judge's names for objects in one worker: a handle per stand-in (its twin's), per judge-side
@@ -34,6 +37,10 @@ final class JudgeObjects {
 
     JudgeObjects(Certification certification) {
         this.certification = certification;
+    }
+
+    Certification certification() {
+        return certification;
     }
 
     int generation() {
@@ -116,9 +123,34 @@ final class JudgeObjects {
             } else if (surface instanceof ForeignSurface) {
                 // What the student's code made is not the judge's to send back: the worker gets nothing in its place.
                 out.u8(Protocol.REF_NULL);
+            } else if (surface instanceof Transformed && certification.holdsStandIn(surface)) {
+                out.u8(Protocol.REF_PLACED).i32(placedHandle((Transformed) surface));
             } else {
                 out.u8(Protocol.REF_JUDGE).i32(judgeHandle(surface));
             }
+        }
+
+        /** A placement of a student's object: built again in the worker, over the placed surface's own reference. */
+        private int placedHandle(Transformed placed) {
+            Integer known = judgeSurfaces.get(placed);
+            if (known != null) {
+                return known;
+            }
+            int handle = nextHandle++;
+            judgeSurfaces.put(placed, handle);
+            byHandle.add(placed);
+            WireOut definition = new WireOut();
+            writeSurface(definition, placed.placed());
+            Affine toWorld = placed.toWorld();
+            for (double x : toWorld.linear()) {
+                definition.f64(x);
+            }
+            Vec3 t = toWorld.translationPart();
+            definition.f64(t.x).f64(t.y).f64(t.z);
+            definitionCount++;
+            definitions.u8(Protocol.DEF_PLACED).i32(handle);
+            appendRaw(definitions, definition);
+            return handle;
         }
 
         int judgeHandle(Surface surface) {
@@ -160,7 +192,7 @@ final class JudgeObjects {
                 definitions.u8(Protocol.DEF_IMAGE).i32(known).i32(image.width()).i32(image.height());
                 for (int j = 0; j < image.height(); j++) {
                     for (int i = 0; i < image.width(); i++) {
-                        ray.math.Vec3 c = image.get(i, j);
+                        Vec3 c = image.get(i, j);
                         definitions.f64(c.x).f64(c.y).f64(c.z);
                     }
                 }
@@ -212,9 +244,11 @@ final class JudgeObjects {
                 }
                 return (Surface) o;
             }
-            case Protocol.REF_JUDGE: {
+            case Protocol.REF_JUDGE:
+            case Protocol.REF_PLACED: {
                 Object o = byHandle(in.i32());
-                if (o instanceof StandIn || !(o instanceof Surface)) {
+                if (o instanceof StandIn || !(o instanceof Surface) || (kind == Protocol.REF_PLACED) != (o instanceof Transformed
+                        && certification.holdsStandIn((Surface) o))) {
                     throw new WireError("the worker named a judge surface it was never given");
                 }
                 return (Surface) o;

@@ -12,6 +12,7 @@ import ray.grading.wire.Batches;
 import ray.grading.wire.Protocol;
 import ray.grading.wire.Records;
 import ray.grading.wire.ThrownData;
+import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.math.Vec3;
@@ -129,8 +130,13 @@ final class Rounds extends AnswerRounds {
     /** A null the student's method returned, as kept. */
     private static final Object NULL = new Object();
 
+    private IntersectAnswers.PerRay intersects(RayKey key) {
+        return intersects.ray(key);
+    }
+
     @Override
     protected void forgetAnswers() {
+        Worker.get().objects().certification().forget();
         intersects.clear();
         cameraAnswers.clear();
         textureAnswers.clear();
@@ -169,16 +175,20 @@ final class Rounds extends AnswerRounds {
         return true;
     }
 
-    /** One round's questions, sent in as many messages as their size needs, and their answers kept. */
+    /**
+     * One round's questions, sent in as many messages as their size needs, and their answers kept. With
+     * each ray whose targets hold judge-side surfaces (a student's group and its children), the answers of
+     * those the judge certified go along, for the ray as the group will pass it on ({@link #prefetch}).
+     */
     private final class Batch {
-        final List<Map.Entry<RayKey, Questions.PerRay>> rays;
+        final List<Map.Entry<RayKey, Questions.PerRay>> intersects;
         final List<Map.Entry<Questions.UvKey, StandIn>> cameraCalls;
         final List<Map.Entry<Questions.UvKey, StandIn>> textureCalls;
         final Map<JudgeRay, Answer> baseTable;
         final List<ExactQuestion> exactTable;
 
         Batch(Questions asked, Map<JudgeRay, Answer> baseTable, List<ExactQuestion> exactTable) {
-            this.rays = new ArrayList<>(asked.intersects.entrySet());
+            this.intersects = new ArrayList<>(asked.intersects.entrySet());
             this.cameraCalls = new ArrayList<>(asked.cameraCalls.entrySet());
             this.textureCalls = new ArrayList<>(asked.textureCalls.entrySet());
             this.baseTable = baseTable;
@@ -186,143 +196,228 @@ final class Rounds extends AnswerRounds {
         }
 
         void send(Worker worker) {
-            int ray = 0;
-            int camera = 0;
-            int texture = 0;
-            boolean tablesSent = false;
-            while (!tablesSent || ray < rays.size() || camera < cameraCalls.size() || texture < textureCalls.size()) {
-                int[] next = new int[3];
-                int rayFrom = ray;
-                int cameraFrom = camera;
-                int textureFrom = texture;
-                worker.batch(m -> {
-                    next[0] = writeRays(m, rayFrom);
-                    next[1] = writeCalls(m, cameraCalls, cameraFrom);
-                    next[2] = writeCalls(m, textureCalls, textureFrom);
-                    writeTables(m, rayFrom == 0 && cameraFrom == 0 && textureFrom == 0);
-                }, in -> {
-                    readRays(in, rayFrom, next[0]);
-                    readCalls(in, cameraCalls, cameraFrom, next[1], cameraAnswers, true);
-                    readCalls(in, textureCalls, textureFrom, next[2], textureAnswers, false);
-                    readNeeds(in, worker);
+            int[] at = new int[3];
+            boolean first = true;
+            while (first || at[0] < intersects.size() || at[1] < cameraCalls.size() || at[2] < textureCalls.size()) {
+                boolean withTables = first;
+                int[] from = at.clone();
+                int[] to = new int[3];
+                worker.batch(m -> write(m, from, to, withTables), in -> {
+                    read(in, worker, from, to);
                     return null;
                 });
-                ray = next[0];
-                camera = next[1];
-                texture = next[2];
-                tablesSent = true;
+                at = to;
+                first = false;
             }
         }
 
-        /** Writes rays from {@code from} while the message is small enough; returns where it stopped. */
-        private int writeRays(JudgeObjects.Message m, int from) {
-            WireOut body = m.body;
-            int countAt = body.size();
-            body.i32(0);
-            int k = from;
-            for (; k < rays.size() && (k == from || body.size() < BATCH_BYTES); k++) {
-                RayKey key = rays.get(k).getKey();
-                Questions.PerRay asked = rays.get(k).getValue();
-                body.f64(Double.longBitsToDouble(key.ox)).f64(Double.longBitsToDouble(key.oy)).f64(Double.longBitsToDouble(key.oz))
-                        .f64(Double.longBitsToDouble(key.dx)).f64(Double.longBitsToDouble(key.dy)).f64(Double.longBitsToDouble(key.dz))
-                        .f64(key.startValue());
+        /** One message: the rays it names, then each section, from {@code from}; {@code to} says where each section stopped. */
+        private void write(JudgeObjects.Message m, int[] from, int[] to, boolean withTables) {
+            Map<RayKey, Integer> rays = new LinkedHashMap<>();
+            Map<Surface, List<Step>> plans = new java.util.IdentityHashMap<>();
+            WireOut intersectSection = new WireOut();
+            WireOut bases = new WireOut();
+            int[] baseGroups = {0};
+            intersectSection.i32(0);
+            int k = from[0];
+            for (; k < intersects.size() && (k == from[0] || intersectSection.size() + bases.size() < BATCH_BYTES); k++) {
+                RayKey key = intersects.get(k).getKey();
+                Questions.PerRay asked = intersects.get(k).getValue();
+                int rayIndex = rays.computeIfAbsent(key, r -> rays.size());
+                intersectSection.varint(rayIndex);
                 int candidates = Math.min(asked.ends.size(), Batches.MAX_CANDIDATES);
-                body.i32(candidates);
+                intersectSection.varint(candidates);
                 for (int c = 0; c < candidates; c++) {
-                    body.f64(asked.ends.get(c));
-                    Records.write(body, asked.befores.get(c), m);
+                    intersectSection.f64(asked.ends.get(c));
+                    Records.write(intersectSection, asked.befores.get(c), m);
                 }
-                body.i32(asked.targets.size());
+                intersectSection.varint(asked.targets.size());
                 for (StandIn target : asked.targets) {
-                    m.target(target);
+                    intersectSection.varint(m.sync(target));
+                    List<Step> plan = plans.computeIfAbsent((Surface) target, t -> planOf(t, m, 0));
+                    if (!plan.isEmpty()) {
+                        prefetch(plan, key.ray(Double.POSITIVE_INFINITY), rayIndex, rays, bases, baseGroups, m);
+                    }
                 }
             }
-            body.patchI32(countAt, k - from);
-            return k;
-        }
-
-        private int writeCalls(JudgeObjects.Message m, List<Map.Entry<Questions.UvKey, StandIn>> calls, int from) {
-            WireOut body = m.body;
-            int countAt = body.size();
-            body.i32(0);
-            int k = from;
-            for (; k < calls.size() && (k == from || body.size() < BATCH_BYTES); k++) {
-                m.target(calls.get(k).getValue());
-                body.f64(calls.get(k).getKey().uValue()).f64(calls.get(k).getKey().vValue());
-            }
-            body.patchI32(countAt, k - from);
-            return k;
-        }
-
-        private void writeTables(JudgeObjects.Message m, boolean first) {
-            WireOut body = m.body;
-            body.i32(first ? baseTable.size() : 0);
-            if (first) {
+            intersectSection.patchI32(0, k - from[0]);
+            to[0] = k;
+            WireOut cameras = new WireOut();
+            to[1] = writeCalls(m, cameras, cameraCalls, from[1]);
+            WireOut textures = new WireOut();
+            to[2] = writeCalls(m, textures, textureCalls, from[2]);
+            if (withTables) {
                 for (Map.Entry<JudgeRay, Answer> e : baseTable.entrySet()) {
-                    body.i32(m.judgeHandle(e.getKey().surface));
-                    e.getKey().writeKey(body);
-                    e.getValue().write(body, m);
+                    bases.i32(rays.computeIfAbsent(e.getKey().key, r -> rays.size())).i32(1).i32(m.judgeHandle(e.getKey().surface));
+                    e.getValue().write(bases, m);
+                    baseGroups[0]++;
                 }
             }
-            body.i32(first ? exactTable.size() : 0);
-            if (first) {
-                for (ExactQuestion q : exactTable) {
-                    body.i32(m.judgeHandle(q.surface));
-                    Records.writeRay(body, q.ray);
-                    Records.write(body, q.before, m);
-                    q.answer.write(body, m);
+            WireOut exactSection = new WireOut();
+            List<ExactQuestion> exact = withTables ? exactTable : List.of();
+            exactSection.i32(exact.size());
+            for (ExactQuestion q : exact) {
+                RayKey key = RayKey.of(q.ray);
+                exactSection.i32(m.judgeHandle(q.surface)).i32(rays.computeIfAbsent(key, r -> rays.size())).f64(q.ray.end);
+                Records.write(exactSection, q.before, m);
+                q.answer.write(exactSection, m);
+            }
+            WireOut body = m.body;
+            body.i32(rays.size());
+            for (RayKey key : rays.keySet()) {
+                Records.writeKey(body, key.ray(Double.POSITIVE_INFINITY));
+            }
+            body.raw(intersectSection).raw(cameras).raw(textures).i32(baseGroups[0]).raw(bases).raw(exactSection);
+        }
+
+        /**
+         * The answers of the certified judge-side surfaces that a target passes {@code ray} to, with an
+         * endless segment, as one group of the base table: a student's group passes its children the ray
+         * it was given, and a placement passes it in its own coordinates (a group of its own).
+         */
+        private void prefetch(List<Step> plan, Ray ray, int rayIndex, Map<RayKey, Integer> rays, WireOut bases, int[] groups,
+                JudgeObjects.Message m) {
+            int countAt = -1;
+            int count = 0;
+            for (Step step : plan) {
+                if (step.placed != null) {
+                    continue;
+                }
+                if (countAt < 0) {
+                    bases.i32(rayIndex);
+                    countAt = bases.size();
+                    bases.i32(0);
+                    groups[0]++;
+                }
+                bases.i32(step.handle);
+                baseAnswer(step.surface, ray).write(bases, m);
+                count++;
+            }
+            if (countAt >= 0) {
+                bases.patchI32(countAt, count);
+            }
+            // Each placement's ray is a group of its own, after this one.
+            for (Step step : plan) {
+                if (step.placed != null) {
+                    Ray local = step.placed.toLocal(ray);
+                    if (local.origin != null && local.direction != null) {
+                        prefetch(step.inner, local, rays.computeIfAbsent(RayKey.of(local), r -> rays.size()), rays, bases, groups, m);
+                    }
                 }
             }
         }
 
-        private void readRays(WireIn in, int from, int to) {
-            JudgeObjects objects = Worker.get().objects();
-            for (int k = from; k < to; k++) {
-                RayKey key = rays.get(k).getKey();
-                Questions.PerRay asked = rays.get(k).getValue();
-                IntersectAnswers.PerRay known = intersects.ray(key);
-                List<Integer> index = new ArrayList<>();
-                int candidates = Math.min(asked.ends.size(), Batches.MAX_CANDIDATES);
-                for (int c = 0; c < candidates; c++) {
-                    index.add(known.add(asked.ends.get(c), asked.befores.get(c)));
+        /**
+         * What a target passes a ray to, found once per batch: each certified judge-side surface among its
+         * parts (through the parts of stand-ins it holds, a student's nested groups), and each placement of
+         * a stand-in with the plan of what it places.
+         */
+        private List<Step> planOf(Surface target, JudgeObjects.Message m, int depth) {
+            List<Step> plan = new ArrayList<>();
+            if (depth > 32) {
+                return plan;
+            }
+            Certification certification = Worker.get().objects().certification();
+            for (Surface child : target.children()) {
+                if (child instanceof StandIn) {
+                    plan.addAll(planOf(child, m, depth + 1));
+                } else if (child instanceof ray.surface.Transformed && certification.holdsStandIn(child)) {
+                    ray.surface.Transformed placed = (ray.surface.Transformed) child;
+                    List<Step> inner = placed.placed() instanceof StandIn ? planOf(placed.placed(), m, depth + 1) : List.of();
+                    if (!inner.isEmpty()) {
+                        plan.add(new Step(null, 0, placed, inner));
+                    }
+                } else if (certification.certified(child)) {
+                    plan.add(new Step(child, m.judgeHandle(child), null, null));
                 }
-                int extra = in.count(Batches.MAX_CANDIDATES, "added candidates");
-                List<Double> ends = new ArrayList<>(asked.ends.subList(0, candidates));
-                for (int e = 0; e < extra; e++) {
-                    double end = in.f64();
-                    IntersectionRecord before = new IntersectionRecord();
-                    Records.read(in, before, objects.reader());
-                    index.add(known.add(end, before));
-                    ends.add(end);
+            }
+            return plan;
+        }
+
+        private int writeCalls(JudgeObjects.Message m, WireOut section, List<Map.Entry<Questions.UvKey, StandIn>> calls, int from) {
+            section.i32(0);
+            int k = from;
+            for (; k < calls.size() && (k == from || section.size() < BATCH_BYTES); k++) {
+                section.u8(Protocol.REF_TWIN).i32(m.sync(calls.get(k).getValue()));
+                section.f64(calls.get(k).getKey().uValue()).f64(calls.get(k).getKey().vValue());
+            }
+            section.patchI32(0, k - from);
+            return k;
+        }
+
+        private void read(WireIn in, Worker worker, int[] from, int[] to) {
+            JudgeObjects objects = worker.objects();
+            for (int k = from[0]; k < to[0]; k++) {
+                readRay(in, objects, intersects.get(k).getKey(), intersects.get(k).getValue());
+            }
+            readCalls(in, cameraCalls, from[1], to[1], cameraAnswers, true);
+            readCalls(in, textureCalls, from[2], to[2], textureAnswers, false);
+            readNeeds(in, objects);
+        }
+
+        private void readRay(WireIn in, JudgeObjects objects, RayKey key, Questions.PerRay asked) {
+            IntersectAnswers.PerRay known = intersects(key);
+            List<Integer> index = new ArrayList<>();
+            List<Double> ends = new ArrayList<>();
+            int candidates = Math.min(asked.ends.size(), Batches.MAX_CANDIDATES);
+            for (int c = 0; c < candidates; c++) {
+                index.add(known.add(asked.ends.get(c), asked.befores.get(c)));
+                ends.add(asked.ends.get(c));
+            }
+            int extra = in.varint();
+            if (extra > Batches.MAX_CANDIDATES) {
+                throw new WireError(extra + " added candidates");
+            }
+            for (int e = 0; e < extra; e++) {
+                double end = in.f64();
+                IntersectionRecord before = new IntersectionRecord();
+                Records.read(in, before, objects.reader());
+                index.add(known.add(end, before));
+                ends.add(end);
+            }
+            for (StandIn target : asked.targets) {
+                int form = in.u8();
+                if (form == Batches.ALL_MISSED) {
+                    for (int c = 0; c < index.size(); c++) {
+                        known.put(target, index.get(c), Answer.MISS);
+                    }
+                    continue;
                 }
-                for (StandIn target : asked.targets) {
-                    int base = in.i32();
-                    if (base < -1 || base >= index.size()) {
-                        throw new ray.grading.wire.WireError("a base answer of candidate " + base);
-                    }
-                    Answer baseAnswer = base < 0 ? null : Answer.read(in, objects.reader());
-                    Answer[] byCandidate = new Answer[index.size()];
-                    if (baseAnswer != null) {
-                        for (int c = 0; c < byCandidate.length; c++) {
-                            byCandidate[c] = baseAnswer.predict(key.startValue(), ends.get(c));
-                        }
-                    }
-                    int explicit = in.count(index.size(), "explicit answers");
-                    for (int e = 0; e < explicit; e++) {
-                        int c = in.index(index.size(), "candidate");
-                        int kind = in.u8();
-                        if (kind == Batches.NEEDS) {
-                            byCandidate[c] = null;
-                        } else if (kind == Batches.ANSWERED) {
-                            byCandidate[c] = Answer.read(in, objects.reader());
-                        } else {
-                            throw new ray.grading.wire.WireError("an answer of kind " + kind);
-                        }
-                    }
+                if (form != Batches.WITH_BASE) {
+                    throw new WireError("a target's answers of form " + form);
+                }
+                int base = in.varint() - 1;
+                if (base >= index.size()) {
+                    throw new WireError("a base answer of candidate " + base);
+                }
+                Answer baseAnswer = base < 0 ? null : Answer.read(in, objects.reader());
+                Answer[] byCandidate = new Answer[index.size()];
+                if (baseAnswer != null) {
                     for (int c = 0; c < byCandidate.length; c++) {
-                        if (byCandidate[c] != null) {
-                            known.put(target, index.get(c), byCandidate[c]);
-                        }
+                        byCandidate[c] = baseAnswer.predict(key.startValue(), ends.get(c));
+                    }
+                }
+                int explicit = in.varint();
+                if (explicit > index.size()) {
+                    throw new WireError(explicit + " explicit answers of " + index.size() + " candidates");
+                }
+                for (int e = 0; e < explicit; e++) {
+                    int c = in.varint();
+                    if (c >= index.size()) {
+                        throw new WireError("candidate " + c + " of " + index.size());
+                    }
+                    int kind = in.u8();
+                    if (kind == Batches.NEEDS) {
+                        byCandidate[c] = null;
+                    } else if (kind == Batches.ANSWERED) {
+                        byCandidate[c] = Answer.read(in, objects.reader());
+                    } else {
+                        throw new WireError("an answer of kind " + kind);
+                    }
+                }
+                for (int c = 0; c < byCandidate.length; c++) {
+                    if (byCandidate[c] != null) {
+                        known.put(target, index.get(c), byCandidate[c]);
                     }
                 }
             }
@@ -339,28 +434,57 @@ final class Rounds extends AnswerRounds {
                     Object value = camera ? Records.readRayOrNull(in) : in.vec();
                     answer = value == null ? NULL : value;
                 } else {
-                    throw new ray.grading.wire.WireError("an answer of status " + status);
+                    throw new WireError("an answer of status " + status);
                 }
                 answers.put(calls.get(k).getKey(), answer);
             }
         }
 
-        private void readNeeds(WireIn in, Worker worker) {
-            JudgeObjects objects = worker.objects();
+        private void readNeeds(WireIn in, JudgeObjects objects) {
             int bases = in.count(Protocol.MAX_ENTRIES, "needed base answers");
             for (int k = 0; k < bases; k++) {
                 Surface surface = objects.readJudgeSurface(in.i32());
-                RayKey key = RayKey.of(in.f64(), in.f64(), in.f64(), in.f64(), in.f64(), in.f64(), in.f64());
-                neededBases.put(new JudgeRay(surface, key), true);
+                neededBases.put(new JudgeRay(surface, RayKey.of(Records.readKey(in))), true);
             }
             int exact = in.count(Protocol.MAX_ENTRIES, "needed exact answers");
             for (int k = 0; k < exact; k++) {
                 Surface surface = objects.readJudgeSurface(in.i32());
-                Ray ray = Records.readRay(in);
+                Ray key = Records.readKey(in);
+                key.end = in.f64();
                 IntersectionRecord before = new IntersectionRecord();
                 Records.read(in, before, objects.reader());
-                neededExact.add(new ExactQuestion(surface, ray, before));
+                neededExact.add(new ExactQuestion(surface, key, before));
             }
+        }
+    }
+
+    /** One step of a target's plan: a certified surface (and its handle), or a placement and the plan of what it places. */
+    private static final class Step {
+        final Surface surface;
+        final int handle;
+        final ray.surface.Transformed placed;
+        final List<Step> inner;
+
+        Step(Surface surface, int handle, ray.surface.Transformed placed, List<Step> inner) {
+            this.surface = surface;
+            this.handle = handle;
+            this.placed = placed;
+            this.inner = inner;
+        }
+    }
+
+    /** A certified surface's answer to the ray with an endless segment, on a record of sentinels (so that every field it writes shows). */
+    static Answer baseAnswer(Surface surface, Ray ray) {
+        IntersectionRecord before = Sentinels.record();
+        IntersectionRecord out = new IntersectionRecord();
+        out.set(before);
+        Ray asked = ray.copy();
+        asked.end = Double.POSITIVE_INFINITY;
+        try {
+            boolean hit = surface.intersect(out, asked);
+            return Answer.returned(hit, before, out, asked.start, Double.POSITIVE_INFINITY, asked);
+        } catch (RuntimeException | Error e) {
+            return Answer.threw(ThrownData.of(e, "ray.grading."));
         }
     }
 
@@ -380,18 +504,8 @@ final class Rounds extends AnswerRounds {
                     .f64(key.startValue());
         }
 
-        /** The surface's answer to the ray with an endless segment, on a record of sentinels (so that every field it writes shows). */
         Answer baseAnswer() {
-            IntersectionRecord before = Sentinels.record();
-            IntersectionRecord out = new IntersectionRecord();
-            out.set(before);
-            Ray ray = key.ray(Double.POSITIVE_INFINITY);
-            try {
-                boolean hit = surface.intersect(out, ray);
-                return Answer.returned(hit, before, out, ray.start, Double.POSITIVE_INFINITY, ray);
-            } catch (RuntimeException | Error e) {
-                return Answer.threw(ThrownData.of(e, "ray.grading."));
-            }
+            return Rounds.baseAnswer(surface, key.ray(Double.POSITIVE_INFINITY));
         }
 
         @Override

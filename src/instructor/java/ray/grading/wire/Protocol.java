@@ -33,7 +33,7 @@ public final class Protocol {
     // Definitions, sent ahead of the calls that use them.
     /** A twin: the student's class made by its no-argument constructor (handle, class name). */
     public static final int DEF_TWIN = 1;
-    /** The framework's fields of a twin, in {@link FrameworkFields}' order (handle, values). */
+    /** The framework's fields of a twin (handle, class name, values in {@link FrameworkFields}' order). */
     public static final int DEF_STATE = 2;
     /** The judge called complete() on the stand-in: the twin's complete() runs too (handle). */
     public static final int DEF_COMPLETE = 3;
@@ -41,6 +41,13 @@ public final class Protocol {
     public static final int DEF_JUDGE = 4;
     /** A texture image: id, width, height, then its 3·w·h linear values. */
     public static final int DEF_IMAGE = 5;
+    /**
+     * A placement (the framework's Transformed) of something that holds a student's object, built again
+     * on the worker's side so that the student's group searches it there: handle, the placed surface
+     * (a reference), and the map to the world (9 numbers of its linear part, row-major, and 3 of its
+     * translation).
+     */
+    public static final int DEF_PLACED = 6;
 
     // How an object is named in a message.
     public static final int REF_NULL = 0;
@@ -50,6 +57,8 @@ public final class Protocol {
     public static final int REF_JUDGE = 2;
     /** An object the student's code made that the judge never sent (worker to judge only): its class name. */
     public static final int REF_FOREIGN = 3;
+    /** A placement built on both sides ({@link #DEF_PLACED}). */
+    public static final int REF_PLACED = 4;
 
     // Calls.
     public static final int OP_INTERSECT = 1;

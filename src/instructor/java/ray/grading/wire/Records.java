@@ -36,6 +36,19 @@ public final class Records {
         return new Ray(origin, direction, in.f64(), in.f64());
     }
 
+    /** A ray as a key: its origin, direction and start, seven numbers (its end is asked apart). */
+    public static void writeKey(WireOut out, Ray ray) {
+        out.f64(ray.origin.x).f64(ray.origin.y).f64(ray.origin.z).f64(ray.direction.x).f64(ray.direction.y).f64(ray.direction.z)
+                .f64(ray.start);
+    }
+
+    /** A ray {@link #writeKey} wrote, with an endless segment. */
+    public static Ray readKey(WireIn in) {
+        Vec3 origin = new Vec3(in.f64(), in.f64(), in.f64());
+        Vec3 direction = new Vec3(in.f64(), in.f64(), in.f64());
+        return new Ray(origin, direction, in.f64(), Double.POSITIVE_INFINITY);
+    }
+
     /** A ray, or null: a presence byte first. */
     public static void writeRayOrNull(WireOut out, Ray ray) {
         out.bool(ray != null);

@@ -48,6 +48,22 @@ public final class WireIn {
         return v;
     }
 
+    /** A non-negative int written by {@link WireOut#varint}. */
+    public int varint() {
+        int value = 0;
+        for (int shift = 0; shift < 35; shift += 7) {
+            int b = u8();
+            value |= (b & 0x7f) << shift;
+            if ((b & 0x80) == 0) {
+                if (value < 0) {
+                    throw new WireError("a varint beyond an int's range");
+                }
+                return value;
+            }
+        }
+        throw new WireError("a varint of more than five bytes");
+    }
+
     public long i64() {
         need(8);
         long v = 0;

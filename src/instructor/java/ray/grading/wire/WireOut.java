@@ -54,6 +54,18 @@ public final class WireOut {
         return this;
     }
 
+    /** A non-negative int in 7-bit groups, low first (LEB128): one byte below 128, the usual count or index. */
+    public WireOut varint(int value) {
+        if (value < 0) {
+            throw new IllegalArgumentException("a varint of " + value);
+        }
+        while (value >= 0x80) {
+            u8(value & 0x7f | 0x80);
+            value >>>= 7;
+        }
+        return u8(value);
+    }
+
     public WireOut i64(long value) {
         room(8);
         for (int shift = 56; shift >= 0; shift -= 8) {

@@ -5,6 +5,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
@@ -24,9 +25,9 @@ import ray.surface.Surface;
 /**
  * Answers a batch ({@link Batches} has the layout): every intersect target on every candidate of its
  * ray, and the candidates a search will ask next; every camera and texture call. A student's group
- * that calls a judge-side surface gets its answer from the tables the judge sent, or, when the
- * table lacks it, a miss for now and a note of what is needed; that evaluation is then not an
- * answer, and the judge asks again once it has sent what was needed.
+ * that calls a judge-side surface gets its answer from the tables the judge sent, or, when they lack
+ * it, a miss for now and a note of what is needed: that evaluation is then no answer, and the judge
+ * asks again once it has sent what was needed.
  */
 final class BatchCalls {
     private final WorkerObjects objects;
@@ -37,14 +38,65 @@ final class BatchCalls {
         this.link = link;
     }
 
-    /** One batch being answered: the judge's tables, and what evaluations needed beyond them. */
+    /** One batch being answered: its rays, the judge's tables, and what evaluations needed beyond them. */
     final class Running {
-        private final Map<RayKey, Answer> bases = new HashMap<>();
-        private final Map<ExactKey, Answer> exact = new HashMap<>();
-        final Map<RayKey, Boolean> neededBases = new LinkedHashMap<>();
-        final Map<ExactKey, IntersectionRecord> neededExact = new LinkedHashMap<>();
+        private final List<Ray> rays;
+        private final Map<Key, Integer> rayIndex = new HashMap<>();
+        /** Per ray index, the judge's base answers: handles sorted, answers alike. */
+        private final int[][] baseHandles;
+        private final Answer[][] baseAnswers;
+        private final Map<Key, Answer> exact = new HashMap<>();
+        final Map<Key, Boolean> neededBases = new LinkedHashMap<>();
+        final Map<Key, IntersectionRecord> neededExact = new LinkedHashMap<>();
+        /** The ray being evaluated (its index), for the quick way to a judge-side surface's table. */
+        private int current = -1;
         /** The evaluation running used a judge-side answer it does not have. */
         boolean guessed;
+
+        Running(List<Ray> rays) {
+            this.rays = rays;
+            this.baseHandles = new int[rays.size()][];
+            this.baseAnswers = new Answer[rays.size()][];
+            for (int k = 0; k < rays.size(); k++) {
+                rayIndex.putIfAbsent(new Key(-1, rays.get(k), Double.NaN, null), k);
+            }
+        }
+
+        /** The batch's index of a ray with this origin, direction and start, or −1. */
+        private int indexOf(Ray ray) {
+            if (current >= 0) {
+                Ray c = rays.get(current);
+                // The student's group passes its children copies of the ray it was given: the same vectors.
+                if (ray.origin == c.origin && ray.direction == c.direction && RecordValues.same(ray.start, c.start)) {
+                    return current;
+                }
+            }
+            return rayIndex.getOrDefault(new Key(-1, ray, Double.NaN, null), -1);
+        }
+
+        private Answer base(int ray, int handle) {
+            int[] handles = baseHandles[ray];
+            if (handles == null) {
+                return null;
+            }
+            int k = java.util.Arrays.binarySearch(handles, handle);
+            return k < 0 ? null : baseAnswers[ray][k];
+        }
+
+        /** Adds the base answers of one ray, by handle (a later answer for a handle replaces an earlier one). */
+        private void addBases(int ray, int[] handles, Answer[] answers) {
+            java.util.TreeMap<Integer, Answer> all = new java.util.TreeMap<>();
+            if (baseHandles[ray] != null) {
+                for (int k = 0; k < baseHandles[ray].length; k++) {
+                    all.put(baseHandles[ray][k], baseAnswers[ray][k]);
+                }
+            }
+            for (int k = 0; k < handles.length; k++) {
+                all.put(handles[k], answers[k]);
+            }
+            baseHandles[ray] = all.keySet().stream().mapToInt(Integer::intValue).toArray();
+            baseAnswers[ray] = all.values().toArray(new Answer[0]);
+        }
 
         /** A judge-side surface's answer from the tables; a miss and a note of the need when they lack it. */
         boolean judgeAnswer(JudgeSurface surface, IntersectionRecord out, Ray ray) {
@@ -52,22 +104,21 @@ final class BatchCalls {
                 guessed = true;
                 return false;
             }
+            int r = indexOf(ray);
             if (surface.certified) {
-                RayKey key = new RayKey(surface.handle, ray);
-                Answer base = bases.get(key);
+                Answer base = r < 0 ? null : base(r, surface.handle);
                 if (base == null) {
-                    neededBases.put(key, true);
+                    neededBases.put(new Key(surface.handle, ray, Double.NaN, null), true);
                     guessed = true;
                     return false;
                 }
                 return base.predict(ray.start, ray.end).applyTo(out, ray);
             }
-            ExactKey key = new ExactKey(surface.handle, ray, out);
-            Answer answer = exact.get(key);
+            Answer answer = exact.get(new Key(surface.handle, ray, ray.end, out));
             if (answer == null) {
                 IntersectionRecord before = new IntersectionRecord();
                 before.set(out);
-                neededExact.put(key, before);
+                neededExact.put(new Key(surface.handle, ray, ray.end, out), before);
                 guessed = true;
                 return false;
             }
@@ -82,29 +133,41 @@ final class BatchCalls {
     WireOut answer(WireIn in) {
         objects.define(in);
         objects.settle();
-        WireOut answer = new WireOut();
-        Running running = new Running();
-        List<RayCalls> rays = readRays(in);
+        int rayCount = in.count(Protocol.MAX_ENTRIES, "rays");
+        List<Ray> rays = new ArrayList<>(rayCount);
+        for (int k = 0; k < rayCount; k++) {
+            rays.add(Records.readKey(in));
+        }
+        Running running = new Running(rays);
+        List<RayCalls> intersects = readIntersects(in, rays);
         List<UvCall> cameraCalls = readUvCalls(in);
         List<UvCall> textureCalls = readUvCalls(in);
-        int bases = in.count(Protocol.MAX_ENTRIES, "judge base answers");
-        for (int k = 0; k < bases; k++) {
-            int handle = in.i32();
-            RayKey key = new RayKey(handle, readKeyRay(in));
-            running.bases.put(key, Answer.read(in, objects));
+        int baseGroups = in.count(Protocol.MAX_ENTRIES, "judge base answer groups");
+        for (int g = 0; g < baseGroups; g++) {
+            int ray = in.index(rayCount, "ray");
+            int n = in.count(Protocol.MAX_PARTS, "judge base answers");
+            int[] handles = new int[n];
+            Answer[] answers = new Answer[n];
+            for (int k = 0; k < n; k++) {
+                handles[k] = in.i32();
+                answers[k] = Answer.read(in, objects);
+            }
+            running.addBases(ray, handles, answers);
         }
         int exacts = in.count(Protocol.MAX_ENTRIES, "judge exact answers");
         for (int k = 0; k < exacts; k++) {
             int handle = in.i32();
-            Ray ray = Records.readRay(in);
-            IntersectionRecord record = new IntersectionRecord();
-            Records.read(in, record, objects);
-            running.exact.put(new ExactKey(handle, ray, record), Answer.read(in, objects));
+            Ray ray = rays.get(in.index(rayCount, "ray"));
+            double end = in.f64();
+            IntersectionRecord before = new IntersectionRecord();
+            Records.read(in, before, objects);
+            running.exact.put(new Key(handle, ray, end, before), Answer.read(in, objects));
         }
         in.end();
+        WireOut answer = new WireOut();
         link.inBatch(running);
         try {
-            for (RayCalls ray : rays) {
+            for (RayCalls ray : intersects) {
                 ray.evaluate(running, answer);
             }
             for (UvCall call : cameraCalls) {
@@ -117,63 +180,55 @@ final class BatchCalls {
             link.inBatch(null);
         }
         answer.i32(running.neededBases.size());
-        for (RayKey key : running.neededBases.keySet()) {
-            answer.i32(key.handle);
-            writeKeyRay(answer, key.ray);
+        for (Key need : running.neededBases.keySet()) {
+            answer.i32(need.handle);
+            Records.writeKey(answer, need.ray);
         }
         answer.i32(running.neededExact.size());
-        for (Map.Entry<ExactKey, IntersectionRecord> need : running.neededExact.entrySet()) {
+        for (Map.Entry<Key, IntersectionRecord> need : running.neededExact.entrySet()) {
             answer.i32(need.getKey().handle);
-            Records.writeRay(answer, need.getKey().ray);
+            Records.writeKey(answer, need.getKey().ray);
+            answer.f64(need.getKey().end);
             Records.write(answer, need.getValue(), objects);
         }
         return answer;
     }
 
-    private static Ray readKeyRay(WireIn in) {
-        Vec3 origin = new Vec3(in.f64(), in.f64(), in.f64());
-        Vec3 direction = new Vec3(in.f64(), in.f64(), in.f64());
-        return new Ray(origin, direction, in.f64(), Double.POSITIVE_INFINITY);
-    }
-
-    private static void writeKeyRay(WireOut out, Ray ray) {
-        out.f64(ray.origin.x).f64(ray.origin.y).f64(ray.origin.z).f64(ray.direction.x).f64(ray.direction.y).f64(ray.direction.z)
-                .f64(ray.start);
-    }
-
-    private List<RayCalls> readRays(WireIn in) {
-        int n = in.count(Protocol.MAX_ENTRIES, "rays");
-        List<RayCalls> rays = new ArrayList<>(n);
+    private List<RayCalls> readIntersects(WireIn in, List<Ray> rays) {
+        int n = in.count(Protocol.MAX_ENTRIES, "intersect rays");
+        List<RayCalls> list = new ArrayList<>(n);
         for (int k = 0; k < n; k++) {
-            Ray key = readKeyRay(in);
-            int candidates = in.count(Batches.MAX_CANDIDATES, "candidates");
-            List<Candidate> list = new ArrayList<>();
-            for (int c = 0; c < candidates; c++) {
+            int index = in.varint();
+            if (index >= rays.size()) {
+                throw new WireError("ray " + index + " of " + rays.size());
+            }
+            int count = in.varint();
+            if (count > Batches.MAX_CANDIDATES) {
+                throw new WireError(count + " candidates");
+            }
+            List<Candidate> candidates = new ArrayList<>(count);
+            for (int c = 0; c < count; c++) {
                 double end = in.f64();
                 IntersectionRecord before = new IntersectionRecord();
                 Records.read(in, before, objects);
-                list.add(new Candidate(end, before));
+                candidates.add(new Candidate(end, before));
             }
-            int targets = in.count(Protocol.MAX_PARTS, "targets");
-            List<Surface> list2 = new ArrayList<>(targets);
-            for (int t = 0; t < targets; t++) {
-                list2.add(twinSurface(in));
+            int targetCount = in.varint();
+            List<Surface> targets = new ArrayList<>(Math.min(targetCount, 1024));
+            for (int t = 0; t < targetCount; t++) {
+                targets.add(twinSurface(in.varint()));
             }
-            rays.add(new RayCalls(key, list, candidates, list2));
+            list.add(new RayCalls(index, rays.get(index), candidates, targets));
         }
-        return rays;
+        return list;
     }
 
-    /** A target: a twin reference; a broken twin is a target whose every answer is what its making threw. */
-    private Surface twinSurface(WireIn in) {
-        if (in.u8() != Protocol.REF_TWIN) {
-            throw new WireError("a batch target that is no twin");
-        }
-        int handle = in.i32();
+    /** A target, by its twin's handle; a broken twin is a target whose every answer is what its making threw. */
+    private Surface twinSurface(int handle) {
         try {
             return objects.twin(handle, Surface.class);
         } catch (WorkerObjects.BrokenTwin b) {
-            return new Broken(b.why);
+            return new WorkerObjects.BrokenSurface(b.why);
         }
     }
 
@@ -200,37 +255,41 @@ final class BatchCalls {
         }
 
         boolean same(double otherEnd, IntersectionRecord other) {
-            return Double.doubleToRawLongBits(end) == Double.doubleToRawLongBits(otherEnd) && RecordValues.equal(before, other);
+            return RecordValues.same(end, otherEnd) && RecordValues.equal(before, other);
         }
     }
 
     /** The intersects of one ray: every target on every candidate. */
     private final class RayCalls {
+        final int index;
         final Ray key;
         final List<Candidate> candidates;
         final int asked;
         final List<Surface> targets;
 
-        RayCalls(Ray key, List<Candidate> candidates, int asked, List<Surface> targets) {
+        RayCalls(int index, Ray key, List<Candidate> candidates, List<Surface> targets) {
+            this.index = index;
             this.key = key;
             this.candidates = candidates;
-            this.asked = asked;
+            this.asked = candidates.size();
             this.targets = targets;
         }
 
         void evaluate(Running running, WireOut out) {
+            running.current = index;
             // answers.get(t).get(c): target t on candidate c; null when it needed what the judge did not send.
-            List<List<Answer>> answers = new ArrayList<>();
+            List<List<Answer>> answers = new ArrayList<>(targets.size());
             for (int t = 0; t < targets.size(); t++) {
-                answers.add(new ArrayList<>());
+                answers.add(new ArrayList<>(candidates.size()));
             }
             for (int c = 0; c < candidates.size(); c++) {
                 Candidate candidate = candidates.get(c);
                 for (int t = 0; t < targets.size(); t++) {
                     Answer a = run(running, targets.get(t), candidate);
                     answers.get(t).add(a);
-                    // A hit is what the other targets of a search are asked with next; one target alone is never asked again.
-                    if (targets.size() > 1 && a != null && a.status == Protocol.RETURNED && a.hit && (a.mask & Records.T) != 0) {
+                    // A hit is what a search asks its other surfaces with next (a group's loop, a mesh's tree: a few
+                    // dozen surfaces a ray); a lone target is never asked again, and a loop over hundreds is no search.
+                    if (targets.size() > 1 && targets.size() <= Batches.MAX_SEARCHED && a != null && a.status == Protocol.RETURNED && a.hit && (a.mask & Records.T) != 0) {
                         IntersectionRecord after = new IntersectionRecord();
                         after.set(candidate.before);
                         Records.apply(a.mask, a.written, after);
@@ -239,7 +298,8 @@ final class BatchCalls {
                     }
                 }
             }
-            out.i32(candidates.size() - asked);
+            running.current = -1;
+            out.varint(candidates.size() - asked);
             for (Candidate c : candidates.subList(asked, candidates.size())) {
                 out.f64(c.end);
                 Records.write(out, c.before, objects);
@@ -261,7 +321,20 @@ final class BatchCalls {
             candidates.add(new Candidate(end, before));
         }
 
+        /**
+         * The base answer (the one with the farthest end that can be one) and every answer its rule does
+         * not predict; a target that missed on every candidate, leaving everything alone, in one byte.
+         */
         private void writeTarget(List<Answer> answers, WireOut out) {
+            boolean allMissed = true;
+            for (Answer a : answers) {
+                allMissed &= a != null && Answer.follows(a, Answer.MISS);
+            }
+            if (allMissed) {
+                out.u8(Batches.ALL_MISSED);
+                return;
+            }
+            out.u8(Batches.WITH_BASE);
             int base = -1;
             for (int c = 0; c < answers.size(); c++) {
                 Answer a = answers.get(c);
@@ -269,7 +342,7 @@ final class BatchCalls {
                     base = c;
                 }
             }
-            out.i32(base);
+            out.varint(base + 1);
             Answer baseAnswer = base < 0 ? null : answers.get(base);
             if (baseAnswer != null) {
                 baseAnswer.write(out, objects);
@@ -281,9 +354,9 @@ final class BatchCalls {
                     explicit.add(c);
                 }
             }
-            out.i32(explicit.size());
+            out.varint(explicit.size());
             for (int c : explicit) {
-                out.i32(c);
+                out.varint(c);
                 Answer a = answers.get(c);
                 if (a == null) {
                     out.u8(Batches.NEEDS);
@@ -296,9 +369,6 @@ final class BatchCalls {
 
         /** The target's answer on the candidate, or null when it needed a judge-side answer it was not given. */
         private Answer run(Running running, Surface target, Candidate candidate) {
-            if (target instanceof Broken) {
-                return Answer.threw(((Broken) target).why);
-            }
             IntersectionRecord out = new IntersectionRecord();
             out.set(candidate.before);
             Ray ray = new Ray(key.origin, key.direction, key.start, candidate.end);
@@ -308,20 +378,10 @@ final class BatchCalls {
                 boolean hit = target.intersect(out, ray);
                 answer = Answer.returned(hit, candidate.before, out, key.start, candidate.end, ray);
             } catch (Throwable t) { // whatever the student's code throws is its answer
-                answer = Answer.threw(thrownData(t));
+                answer = Answer.threw(WorkerCalls.thrownData(t));
             }
             return running.guessed ? null : answer;
         }
-    }
-
-    private ThrownData thrownData(Throwable t) {
-        if (t instanceof JudgeSurface.JudgeSideThrew) {
-            return ((JudgeSurface.JudgeSideThrew) t).thrown;
-        }
-        if (t instanceof WorkerObjects.BrokenTwin) {
-            return ((WorkerObjects.BrokenTwin) t).why;
-        }
-        return ThrownData.of(t, WorkerMain.OWN_PACKAGE);
     }
 
     /** A camera or texture call. */
@@ -342,7 +402,7 @@ final class BatchCalls {
                 ray = objects.twin(handle, Camera.class).generateRay(u, v);
             } catch (Throwable t) {
                 out.u8(Protocol.THREW);
-                thrownData(t).write(out);
+                WorkerCalls.thrownData(t).write(out);
                 return;
             }
             out.u8(Protocol.RETURNED);
@@ -355,69 +415,31 @@ final class BatchCalls {
                 color = objects.twin(handle, Texture.class).getTexColor(u, v);
             } catch (Throwable t) {
                 out.u8(Protocol.THREW);
-                thrownData(t).write(out);
+                WorkerCalls.thrownData(t).write(out);
                 return;
             }
             out.u8(Protocol.RETURNED).vec(color);
         }
     }
 
-    /** A target whose making threw. */
-    private static final class Broken extends Surface {
-        final ThrownData why;
-
-        Broken(ThrownData why) {
-            this.why = why;
-        }
-
-        @Override
-        public boolean intersect(IntersectionRecord out, Ray ray) {
-            return false;
-        }
-    }
-
-    /** A judge surface's ray, for the base answers: the handle and the ray's origin, direction and start. */
-    private static final class RayKey {
+    /**
+     * A judge-side question as a key: a handle (−1 for a ray alone), a ray's origin, direction and
+     * start, and for an exact question the segment end and the record before.
+     */
+    private static final class Key {
         final int handle;
         final Ray ray;
-        private final int hash;
-
-        RayKey(int handle, Ray ray) {
-            this.handle = handle;
-            this.ray = ray;
-            this.hash = java.util.Objects.hash(handle, bits(ray.origin), bits(ray.direction), Double.doubleToRawLongBits(ray.start));
-        }
-
-        @Override
-        public int hashCode() {
-            return hash;
-        }
-
-        @Override
-        public boolean equals(Object o) {
-            if (!(o instanceof RayKey)) {
-                return false;
-            }
-            RayKey k = (RayKey) o;
-            return k.handle == handle && RecordValues.same(k.ray.origin, ray.origin) && RecordValues.same(k.ray.direction, ray.direction)
-                    && RecordValues.same(k.ray.start, ray.start);
-        }
-    }
-
-    /** A judge surface's exact question: the handle, the ray with its end, the record before. */
-    private static final class ExactKey {
-        final int handle;
-        final Ray ray;
+        final double end;
         final IntersectionRecord before;
         private final int hash;
 
-        ExactKey(int handle, Ray ray, IntersectionRecord before) {
+        Key(int handle, Ray ray, double end, IntersectionRecord before) {
             this.handle = handle;
-            this.ray = ray.copy();
-            this.before = new IntersectionRecord();
-            this.before.set(before);
-            this.hash = java.util.Objects.hash(handle, bits(ray.origin), bits(ray.direction), Double.doubleToRawLongBits(ray.start),
-                    Double.doubleToRawLongBits(ray.end), RecordValues.hash(before));
+            this.ray = ray;
+            this.end = end;
+            this.before = before;
+            this.hash = Objects.hash(handle, bits(ray.origin), bits(ray.direction), Double.doubleToRawLongBits(ray.start),
+                    Double.doubleToRawLongBits(end), before == null ? 0 : RecordValues.hash(before));
         }
 
         @Override
@@ -427,16 +449,17 @@ final class BatchCalls {
 
         @Override
         public boolean equals(Object o) {
-            if (!(o instanceof ExactKey)) {
+            if (!(o instanceof Key)) {
                 return false;
             }
-            ExactKey k = (ExactKey) o;
-            return k.handle == handle && RecordValues.same(k.ray.origin, ray.origin) && RecordValues.same(k.ray.direction, ray.direction)
-                    && RecordValues.same(k.ray.start, ray.start) && RecordValues.same(k.ray.end, ray.end) && RecordValues.equal(k.before, before);
+            Key k = (Key) o;
+            return k.hash == hash && k.handle == handle && RecordValues.same(k.ray.origin, ray.origin)
+                    && RecordValues.same(k.ray.direction, ray.direction) && RecordValues.same(k.ray.start, ray.start)
+                    && RecordValues.same(k.end, end) && (k.before == null ? before == null : before != null && RecordValues.equal(k.before, before));
         }
-    }
 
-    private static long bits(Vec3 v) {
-        return v == null ? 0 : Double.doubleToRawLongBits(v.x) * 31 + Double.doubleToRawLongBits(v.y) * 17 + Double.doubleToRawLongBits(v.z);
+        private static long bits(Vec3 v) {
+            return v == null ? 0 : (Double.doubleToRawLongBits(v.x) * 31 + Double.doubleToRawLongBits(v.y)) * 31 + Double.doubleToRawLongBits(v.z);
+        }
     }
 }

@@ -129,13 +129,17 @@ final class WorkerCalls {
 
     /** What the student's code threw; a judge-side surface's exception, or a broken twin's, passes on as it was. */
     static void threw(WireOut answer, Throwable t) {
+        threw(answer, thrownData(t));
+    }
+
+    static ThrownData thrownData(Throwable t) {
         if (t instanceof JudgeSurface.JudgeSideThrew) {
-            threw(answer, ((JudgeSurface.JudgeSideThrew) t).thrown);
-        } else if (t instanceof WorkerObjects.BrokenTwin) {
-            threw(answer, ((WorkerObjects.BrokenTwin) t).why);
-        } else {
-            threw(answer, ThrownData.of(t, WorkerMain.OWN_PACKAGE));
+            return ((JudgeSurface.JudgeSideThrew) t).thrown;
         }
+        if (t instanceof WorkerObjects.BrokenTwin) {
+            return ((WorkerObjects.BrokenTwin) t).why;
+        }
+        return ThrownData.of(t, WorkerMain.OWN_PACKAGE);
     }
 
     static void threw(WireOut answer, ThrownData thrown) {

@@ -13,9 +13,11 @@ import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.image.Image;
+import ray.math.Affine;
 import ray.math.Bounds;
 import ray.math.Vec3;
 import ray.surface.Surface;
+import ray.surface.Transformed;
 
 /**
  * The worker's objects, by the handles the judge gave them: twins (instances of the student's
@@ -33,6 +35,9 @@ final class WorkerObjects implements Refs {
     private final Map<Object, Integer> handles = new IdentityHashMap<>();
     private final Map<Integer, ThrownData> broken = new HashMap<>();
     private final Map<Integer, JudgeSurface> proxies = new HashMap<>();
+    /** Placements of twins (the framework's Transformed), built here as on the judge's side. */
+    private final Map<Integer, Surface> placed = new HashMap<>();
+    private final Map<Object, Integer> placedHandles = new IdentityHashMap<>();
     private final Map<Integer, Image> images = new HashMap<>();
     /** What the definitions asked for and {@link #settle} has not yet done, in order. */
     private final List<Runnable> unsettled = new ArrayList<>();
@@ -61,7 +66,14 @@ final class WorkerObjects implements Refs {
                     unsettled.add(() -> {
                         Object twin = twins.get(handle);
                         if (twin != null) {
-                            FrameworkFields.apply(twin, values, this::find);
+                            try {
+                                FrameworkFields.apply(twin, values, this::find);
+                            } catch (BrokenTwin b) {
+                                // It holds a broken twin: using it throws what that one's making threw.
+                                twins.remove(handle);
+                                handles.remove(twin);
+                                broken.put(handle, b.why);
+                            }
                         }
                     });
                     break;
@@ -80,6 +92,28 @@ final class WorkerObjects implements Refs {
                 case Protocol.DEF_IMAGE:
                     defineImage(in);
                     break;
+                case Protocol.DEF_PLACED: {
+                    int handle = in.i32();
+                    int innerKind = in.u8();
+                    FrameworkFields.SurfaceName inner = new FrameworkFields.SurfaceName(innerKind,
+                            innerKind == Protocol.REF_NULL ? 0 : in.i32());
+                    double[] linear = new double[9];
+                    for (int k2 = 0; k2 < 9; k2++) {
+                        linear[k2] = in.f64();
+                    }
+                    Affine toWorld = Affine.of(linear, new Vec3(in.f64(), in.f64(), in.f64()));
+                    unsettled.add(() -> {
+                        Surface placement;
+                        try {
+                            placement = new Transformed(find(inner), toWorld);
+                        } catch (BrokenTwin b) {
+                            placement = new Transformed(new BrokenSurface(b.why), toWorld);
+                        }
+                        placed.put(handle, placement);
+                        placedHandles.put(placement, handle);
+                    });
+                    break;
+                }
                 default:
                     throw new WireError("a definition of kind " + kind);
             }
@@ -184,6 +218,13 @@ final class WorkerObjects implements Refs {
                 return twin(name.handle, Surface.class);
             case Protocol.REF_JUDGE:
                 return proxy(name.handle);
+            case Protocol.REF_PLACED: {
+                Surface p = placed.get(name.handle);
+                if (p == null) {
+                    throw new WireError("placement " + name.handle + " was never defined");
+                }
+                return p;
+            }
             default:
                 throw new WireError("a surface named by kind " + name.kind);
         }
@@ -197,6 +238,8 @@ final class WorkerObjects implements Refs {
             out.u8(Protocol.REF_JUDGE).i32(((JudgeSurface) surface).handle);
         } else if (handles.containsKey(surface)) {
             out.u8(Protocol.REF_TWIN).i32(handles.get(surface));
+        } else if (placedHandles.containsKey(surface)) {
+            out.u8(Protocol.REF_PLACED).i32(placedHandles.get(surface));
         } else {
             // Something the student's code made: the judge learns only its class.
             out.u8(Protocol.REF_FOREIGN).str(surface.getClass().getName());
@@ -225,6 +268,20 @@ final class WorkerObjects implements Refs {
             throw new WireError("image " + id + " was never defined");
         }
         return image;
+    }
+
+    /** A broken twin where a placement holds it: every search of it throws what its making threw. */
+    static final class BrokenSurface extends Surface {
+        private final ThrownData why;
+
+        BrokenSurface(ThrownData why) {
+            this.why = why;
+        }
+
+        @Override
+        public boolean intersect(ray.IntersectionRecord out, ray.Ray ray) {
+            throw new BrokenTwin(why);
+        }
     }
 
     /** A use of a twin whose making threw: the call answers with what its making threw. */
