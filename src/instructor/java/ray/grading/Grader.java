@@ -145,7 +145,7 @@ public final class Grader implements Callable<Integer> {
             if (sandbox != null) {
                 sandbox.close();
             }
-            if (work != null) {
+            if (work != null && !Boolean.getBoolean("ray1.keepWork")) {
                 ProjectTree.deleteRecursively(work);
             }
         }
@@ -217,7 +217,11 @@ public final class Grader implements Callable<Integer> {
                 overlay.put(missing, stub);
             }
         }
+        long treeStart = System.nanoTime();
         Path instructor = instructorTree();
+        if (Boolean.getBoolean("ray1.debugTimes")) {
+            System.err.printf("tree: %.2f s%n", (System.nanoTime() - treeStart) / 1e9);
+        }
         sandbox = Sandbox.create(GradingClasses.handout(instructor), !noIsolation, slot);
         if (sandbox.warning() != null) {
             System.err.println("warning: " + sandbox.warning());
@@ -237,7 +241,11 @@ public final class Grader implements Callable<Integer> {
                     taskFiles.put(path, file);
                 }
             });
+            long taskStart = System.nanoTime();
             outcomes.addAll(gradeTask(task, taskFiles, instructor, studentFiles, output));
+            if (Boolean.getBoolean("ray1.debugTimes")) {
+                System.err.printf("task %d: %.2f s%n", task, (System.nanoTime() - taskStart) / 1e9);
+            }
         }
         return outcomes;
     }
@@ -308,17 +316,21 @@ public final class Grader implements Callable<Integer> {
         return judged;
     }
 
-    /** The instructor's graded tests of {@code task}, listed once per run (under gradeAll, once for the class). */
+    /**
+     * The instructor's graded tests of {@code task} (every task's when null), all listed at once, in the
+     * judge's JVM, once per run (under gradeAll, once for the class).
+     */
     private List<TestOutcome> listedTests(Integer task) throws IOException, InterruptedException {
         Path tree = instructorTree();
+        List<TestOutcome> all;
         synchronized (listed) {
-            List<TestOutcome> tests = listed.get(task);
-            if (tests == null) {
-                tests = sharedTree != null ? sharedTree.tests(task, () -> tests(tree).list(task)) : tests(tree).list(task);
-                listed.put(task, tests);
+            all = listed.get(null);
+            if (all == null) {
+                all = sharedTree != null ? sharedTree.tests(null, () -> tests(tree).list(null)) : List.copyOf(tests(tree).list(null));
+                listed.put(null, all);
             }
-            return tests;
         }
+        return task == null ? all : all.stream().filter(t -> t.task() == task).collect(java.util.stream.Collectors.toList());
     }
 
     /**

@@ -75,13 +75,30 @@ final class GradingClasses {
             throw new IllegalStateException("the handout's stubs do not compile against the framework:\n" + stubsCompiled.messages());
         }
         copyWorkerClasses(handout);
-        for (Map.Entry<Integer, List<Path>> task : standInSources.entrySet()) {
-            CompileResult compiled = ProjectCompiler.compile(tree, task.getValue(), standIns(tree, task.getKey()),
-                    classes + File.pathSeparator + classpath);
-            if (!compiled.ok()) {
-                throw new IllegalStateException("task " + task.getKey() + "'s stand-ins do not compile:\n" + compiled.messages());
+        // Every stand-in in one compiler run, then each task's classes into its own folder.
+        Path compiledStandIns = tree.resolve("standins-all");
+        List<Path> allStandIns = new ArrayList<>();
+        standInSources.values().forEach(allStandIns::addAll);
+        CompileResult compiled = ProjectCompiler.compile(tree, allStandIns, compiledStandIns, classes + File.pathSeparator + classpath);
+        if (!compiled.ok()) {
+            throw new IllegalStateException("the stand-ins do not compile:\n" + compiled.messages());
+        }
+        for (Map.Entry<String, Integer> file : studentFiles.entrySet()) {
+            String type = file.getKey().substring("src/main/java/".length(), file.getKey().length() - ".java".length());
+            Path folder = compiledStandIns.resolve(type).getParent();
+            String simple = type.substring(type.lastIndexOf('/') + 1);
+            try (Stream<Path> files = Files.list(folder)) {
+                for (Path f : files.collect(Collectors.toList())) {
+                    String name = f.getFileName().toString();
+                    if (name.equals(simple + ".class") || name.startsWith(simple + "$")) {
+                        Path target = standIns(tree, file.getValue()).resolve(compiledStandIns.relativize(f).toString());
+                        Files.createDirectories(target.getParent());
+                        Files.copy(f, target);
+                    }
+                }
             }
         }
+        ProjectTree.deleteRecursively(compiledStandIns);
     }
 
     /** The tree's classes compiled from src/main/java, but the student files': the framework. */

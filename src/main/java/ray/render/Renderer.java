@@ -7,6 +7,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
+import ray.AnswerRounds;
 import ray.camera.Camera;
 import ray.image.Image;
 import ray.math.Vec3;
@@ -117,7 +118,7 @@ public final class Renderer {
                 // A pixel's samples' votes, per kind: one array per worker, only when recording.
                 int[] votes = recordKinds ? new int[SurfaceKind.count()] : null;
                 for (int j = nextRow.getAndIncrement(); j < height; j = nextRow.getAndIncrement()) {
-                    renderRow(shadings.get(k), image, j, kinds, votes, null);
+                    renderRow(shadings.get(k), image, j, kinds, votes, null, null);
                     rowsDone.incrementAndGet();
                 }
             }, () -> nextRow.set(height));
@@ -139,6 +140,8 @@ public final class Renderer {
         int height = image.height();
         boolean[] pending = new boolean[image.width() * height];
         java.util.Arrays.fill(pending, true);
+        // Each pending pixel's state: what it asked and was told in the rounds so far.
+        Object[] states = new Object[pending.length];
         try {
             for (int round = 1; ; round++) {
                 AtomicInteger left = new AtomicInteger();
@@ -146,7 +149,7 @@ public final class Renderer {
                 runWorkers(workerCount, k -> {
                     int[] votes = kinds != null ? new int[SurfaceKind.count()] : null;
                     for (int j = k; j < height; j += workerCount) {
-                        left.addAndGet(renderRow(shadings.get(k), image, j, kinds, votes, pending));
+                        left.addAndGet(renderRow(shadings.get(k), image, j, kinds, votes, pending, states));
                     }
                 }, () -> { });
                 if (Boolean.getBoolean("ray1.debugRounds")) {
@@ -219,7 +222,8 @@ public final class Renderer {
      * of {@link AnswerRounds}: one that used a guess stays pending (and what it threw is dropped, since
      * a guess may have caused it). Returns how many pixels of the row are still pending.
      */
-    private int renderRow(CountingShading shading, Image image, int row, PixelKinds kinds, int[] votes, boolean[] pending) {
+    private int renderRow(CountingShading shading, Image image, int row, PixelKinds kinds, int[] votes, boolean[] pending,
+            Object[] states) {
         int width = plan.window().width;
         int stillPending = 0;
         for (int x = 0; x < width; x++) {
@@ -235,20 +239,24 @@ public final class Renderer {
                 continue;
             }
             Vec3 color;
-            AnswerRounds.begin();
+            AnswerRounds.begin(states[at]);
             try {
                 if (votes != null) {
                     java.util.Arrays.fill(votes, 0);
                 }
                 color = pixel(shading, x, row, votes);
             } catch (RuntimeException | Error e) {
-                if (AnswerRounds.end()) {
+                Object state = AnswerRounds.end();
+                if (state == null) {
                     throw e;
                 }
+                states[at] = state;
                 stillPending++;
                 continue;
             }
-            if (!AnswerRounds.end()) {
+            Object state = AnswerRounds.end();
+            if (state != null) {
+                states[at] = state;
                 stillPending++;
                 continue;
             }
@@ -257,6 +265,7 @@ public final class Renderer {
                 kinds.set(x, row, SurfaceKind.mostVoted(votes));
             }
             pending[at] = false;
+            states[at] = null;
         }
         return stillPending;
     }

@@ -16,7 +16,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
-import ray.render.AnswerRounds;
+import ray.AnswerRounds;
 import ray.scene.ObjReader;
 import ray.testing.Points;
 import ray.testing.ProjectFolder;

@@ -17,6 +17,8 @@ import ray.math.Affine;
 import ray.math.Vec3;
 import ray.surface.Surface;
 import ray.surface.Transformed;
+import ray.surface.Triangle;
+import ray.surface.TriangleSet;
 
 /**
  * The judge's names for objects in one worker: a handle per stand-in (its twin's), per judge-side
@@ -31,6 +33,8 @@ final class JudgeObjects {
     private final List<Object> byHandle = new ArrayList<>(List.of(new Object()));
     private final Map<Surface, Integer> judgeSurfaces = new IdentityHashMap<>();
     private final Map<Image, Integer> images = new IdentityHashMap<>();
+    /** The judge's objects the worker builds again (placements, sets of triangles), named by REF_PLACED. */
+    private final Map<Object, Boolean> builtAgain = new IdentityHashMap<>();
     /** Surfaces the student's code made, as the judge shows them (one per class name). */
     private final Map<String, ForeignSurface> foreign = new java.util.HashMap<>();
     private final Certification certification;
@@ -54,6 +58,7 @@ final class JudgeObjects {
         byHandle.subList(1, byHandle.size()).clear();
         judgeSurfaces.clear();
         images.clear();
+        builtAgain.clear();
     }
 
     /** A message being written: definitions first, then the body. */
@@ -139,6 +144,7 @@ final class JudgeObjects {
             int handle = nextHandle++;
             judgeSurfaces.put(placed, handle);
             byHandle.add(placed);
+            builtAgain.put(placed, true);
             WireOut definition = new WireOut();
             writeSurface(definition, placed.placed());
             Affine toWorld = placed.toWorld();
@@ -150,6 +156,34 @@ final class JudgeObjects {
             definitionCount++;
             definitions.u8(Protocol.DEF_PLACED).i32(handle);
             appendRaw(definitions, definition);
+            return handle;
+        }
+
+        /** A question's target: a stand-in's twin, or a set of stand-in triangles the worker builds again. */
+        int target(Object target) {
+            return target instanceof StandIn ? sync((StandIn) target) : trianglesHandle((TriangleSet) target);
+        }
+
+        /** A set of stand-in triangles, built again in the worker over their twins, in order. */
+        private int trianglesHandle(TriangleSet set) {
+            Integer known = judgeSurfaces.get(set);
+            if (known != null) {
+                return known;
+            }
+            List<Triangle> triangles = set.triangles();
+            int[] parts = new int[triangles.size()];
+            for (int k = 0; k < parts.length; k++) {
+                parts[k] = sync((StandIn) triangles.get(k));
+            }
+            int handle = nextHandle++;
+            judgeSurfaces.put(set, handle);
+            byHandle.add(set);
+            builtAgain.put(set, true);
+            definitionCount++;
+            definitions.u8(Protocol.DEF_TRIANGLES).i32(handle).i32(parts.length);
+            for (int part : parts) {
+                definitions.i32(part);
+            }
             return handle;
         }
 
@@ -247,8 +281,7 @@ final class JudgeObjects {
             case Protocol.REF_JUDGE:
             case Protocol.REF_PLACED: {
                 Object o = byHandle(in.i32());
-                if (o instanceof StandIn || !(o instanceof Surface) || (kind == Protocol.REF_PLACED) != (o instanceof Transformed
-                        && certification.holdsStandIn((Surface) o))) {
+                if (o instanceof StandIn || !(o instanceof Surface) || (kind == Protocol.REF_PLACED) != builtAgain.containsKey(o)) {
                     throw new WireError("the worker named a judge surface it was never given");
                 }
                 return (Surface) o;

@@ -14,6 +14,9 @@ package ray.grading.wire;
  * search asks its next surface ({@link #MAX_CANDIDATES} at most per ray);</li>
  * <li>generateRay calls: a count, then each target, u and v;</li>
  * <li>getTexColor calls: a count, then each target, u and v;</li>
+ * <li>any-hit questions (a shadow ray's "anything in the way?" of a set of the student's triangles): a
+ * count, then each target's handle, a ray's index and a segment end (counts, handles and indices as
+ * varints);</li>
  * <li>judge-side answers the student's code may need (a student's group calling the judge's
  * surfaces): a count of groups of base answers, each a ray's index, a count, and that many judge
  * handles each with its answer to that ray with an endless segment on a record of sentinel values, which the worker derives the answers for
@@ -27,7 +30,8 @@ package ray.grading.wire;
  * none) and that answer, and the candidates whose answer the base's rule does not predict: a count,
  * then each index with {@link #ANSWERED} and the answer, or {@link #NEEDS} when it needs a judge-side
  * answer it was not given (asked again next round); counts and indices here are varints; then each generateRay answer (a status, then a ray or null, or what was thrown) and each
- * getTexColor answer (a status, then a vector or null, or what was thrown); then the judge-side
+ * getTexColor answer (a status, then a vector or null, or what was thrown), and each any-hit answer
+ * (a status, then yes or no, or what was thrown, or {@link Protocol#NEED}); then the judge-side
  * answers needed: a count of base answers (handle and ray: seven numbers), a count of exact ones
  * (handle, ray with its end, record).
  */

@@ -48,6 +48,12 @@ public final class Protocol {
      * translation).
      */
     public static final int DEF_PLACED = 6;
+    /**
+     * A set of twins of the student's triangles (a mesh's or a box's), built again on the worker's side
+     * with the framework's tree over them, so that a ray asks the set once: handle, the count, each
+     * twin's handle in order.
+     */
+    public static final int DEF_TRIANGLES = 7;
 
     // How an object is named in a message.
     public static final int REF_NULL = 0;

@@ -142,6 +142,16 @@ final class BatchCalls {
         List<RayCalls> intersects = readIntersects(in, rays);
         List<UvCall> cameraCalls = readUvCalls(in);
         List<UvCall> textureCalls = readUvCalls(in);
+        int anyCount = in.varint();
+        List<Object[]> anyHits = new ArrayList<>(Math.min(anyCount, 1 << 16));
+        for (int k = 0; k < anyCount; k++) {
+            Surface target = twinSurface(in.varint());
+            int ray = in.varint();
+            if (ray >= rayCount) {
+                throw new WireError("ray " + ray + " of " + rayCount);
+            }
+            anyHits.add(new Object[] {target, rays.get(ray), in.f64()});
+        }
         int baseGroups = in.count(Protocol.MAX_ENTRIES, "judge base answer groups");
         for (int g = 0; g < baseGroups; g++) {
             int ray = in.index(rayCount, "ray");
@@ -175,6 +185,9 @@ final class BatchCalls {
             }
             for (UvCall call : textureCalls) {
                 call.texture(answer);
+            }
+            for (Object[] question : anyHits) {
+                anyHit(running, (Surface) question[0], (Ray) question[1], (Double) question[2], answer);
             }
         } finally {
             link.inBatch(null);
@@ -226,7 +239,7 @@ final class BatchCalls {
     /** A target, by its twin's handle; a broken twin is a target whose every answer is what its making threw. */
     private Surface twinSurface(int handle) {
         try {
-            return objects.twin(handle, Surface.class);
+            return objects.target(handle);
         } catch (WorkerObjects.BrokenTwin b) {
             return new WorkerObjects.BrokenSurface(b.why);
         }
@@ -382,6 +395,24 @@ final class BatchCalls {
             }
             return running.guessed ? null : answer;
         }
+    }
+
+    /** Whether anything of the target lies on the ray's segment (a shadow ray's question); what it needed, when it did. */
+    private static void anyHit(Running running, Surface target, Ray key, double end, WireOut out) {
+        running.guessed = false;
+        boolean hit;
+        try {
+            hit = target.intersectsAny(new Ray(key.origin, key.direction, key.start, end));
+        } catch (Throwable t) { // whatever the student's code throws is its answer
+            out.u8(Protocol.THREW);
+            WorkerCalls.thrownData(t).write(out);
+            return;
+        }
+        if (running.guessed) {
+            out.u8(Protocol.NEED);
+            return;
+        }
+        out.u8(Protocol.RETURNED).bool(hit);
     }
 
     /** A camera or texture call. */

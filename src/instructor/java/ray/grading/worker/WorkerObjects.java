@@ -92,6 +92,28 @@ final class WorkerObjects implements Refs {
                 case Protocol.DEF_IMAGE:
                     defineImage(in);
                     break;
+                case Protocol.DEF_TRIANGLES: {
+                    int handle = in.i32();
+                    int[] parts = new int[in.count(Protocol.MAX_PARTS, "triangles")];
+                    for (int t = 0; t < parts.length; t++) {
+                        parts[t] = in.i32();
+                    }
+                    unsettled.add(() -> {
+                        Surface set;
+                        try {
+                            List<ray.surface.Triangle> triangles = new ArrayList<>(parts.length);
+                            for (int part : parts) {
+                                triangles.add(twin(part, ray.surface.Triangle.class));
+                            }
+                            set = new MirroredTriangles(triangles);
+                        } catch (BrokenTwin b) {
+                            set = new BrokenSurface(b.why);
+                        }
+                        placed.put(handle, set);
+                        placedHandles.put(set, handle);
+                    });
+                    break;
+                }
                 case Protocol.DEF_PLACED: {
                     int handle = in.i32();
                     int innerKind = in.u8();
@@ -200,6 +222,12 @@ final class WorkerObjects implements Refs {
             throw new WireError("twin " + handle + " is no " + type.getSimpleName());
         }
         return type.cast(twin);
+    }
+
+    /** The surface a batch's target names: a twin, or a set built here (a placement, a set of triangles). */
+    Surface target(int handle) {
+        Surface built = placed.get(handle);
+        return built != null ? built : twin(handle, Surface.class);
     }
 
     JudgeSurface proxy(int handle) {

@@ -1,4 +1,4 @@
-package ray.render;
+package ray;
 
 import java.util.function.Supplier;
 
@@ -30,18 +30,25 @@ public abstract class AnswerRounds {
         return installed != null;
     }
 
-    /** Starts a computation on this thread: from now until {@link #end}, an unknown answer is guessed. */
-    public static void begin() {
+    /**
+     * Starts a computation on this thread: from now until {@link #end}, an unknown answer is guessed.
+     * {@code state} is what {@link #end} returned when this computation last ran (null the first time):
+     * what it asked and was told, so that it need not ask again.
+     */
+    public static void begin(Object state) {
         AnswerRounds r = installed;
         if (r != null) {
-            r.beginComputation();
+            r.beginComputation(state);
         }
     }
 
-    /** Ends this thread's computation: true when it used no guess, so that its result stands. */
-    public static boolean end() {
+    /**
+     * Ends this thread's computation: null when it used no guess, so that its result stands; else its
+     * state, for {@link #begin} when it runs again after the next {@link #fetch}.
+     */
+    public static Object end() {
         AnswerRounds r = installed;
-        return r == null || r.endComputation();
+        return r == null ? null : r.endComputation();
     }
 
     /** Asks every question guessed since the last call, together; false when none was. */
@@ -50,12 +57,23 @@ public abstract class AnswerRounds {
         return r != null && r.fetchGuessed();
     }
 
-    /** Forgets the answers learned: the objects asked about may change from here on. */
+    /** Forgets what the computations asked and learned: the objects asked about may change from here on. */
     public static void forget() {
         AnswerRounds r = installed;
         if (r != null) {
             r.forgetAnswers();
         }
+    }
+
+    /**
+     * The copy of a set of triangles that a render searches ({@code copy}, made by {@code set}'s
+     * searchCopy with {@code accelerated} telling whether it searches its tree): itself, unless the
+     * rounds search the set as a whole where its triangles' class runs (one question a ray, not one a
+     * triangle its tree visits).
+     */
+    public static ray.surface.Surface searched(ray.surface.TriangleSet set, boolean accelerated, ray.surface.Surface copy) {
+        AnswerRounds r = installed;
+        return r == null ? copy : r.searchedAsWhole(set, accelerated, copy);
     }
 
     /**
@@ -68,8 +86,9 @@ public abstract class AnswerRounds {
             return computation.get();
         }
         try {
+            Object state = null;
             for (int round = 1; ; round++) {
-                begin();
+                begin(state);
                 T result = null;
                 RuntimeException failure = null;
                 Error error = null;
@@ -80,7 +99,8 @@ public abstract class AnswerRounds {
                 } catch (Error e) {
                     error = e;
                 }
-                if (end()) {
+                state = end();
+                if (state == null) {
                     if (error != null) {
                         throw error;
                     }
@@ -99,11 +119,15 @@ public abstract class AnswerRounds {
         }
     }
 
-    protected abstract void beginComputation();
+    protected abstract void beginComputation(Object state);
 
-    protected abstract boolean endComputation();
+    protected abstract Object endComputation();
 
     protected abstract boolean fetchGuessed();
 
     protected abstract void forgetAnswers();
+
+    protected ray.surface.Surface searchedAsWhole(ray.surface.TriangleSet set, boolean accelerated, ray.surface.Surface copy) {
+        return copy;
+    }
 }

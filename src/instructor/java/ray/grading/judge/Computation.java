@@ -1,0 +1,114 @@
+package ray.grading.judge;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import ray.IntersectionRecord;
+import ray.Ray;
+
+/**
+ * What one computation (a pixel, a test's block) asked in its last run, in order: its log. Running
+ * again, a computation mostly asks what it asked before in the same order, so each call is first
+ * checked against the log's next question; a call the answers sent another way (a loop that now
+ * stops early, a search that now prunes) is looked up in the whole log, and else in the pool of
+ * answers the worker gave unasked (what a search asks next); only then is it a new question. The
+ * questions used in a run are the next run's log.
+ */
+final class Computation {
+    /** Logs longer than this are looked up by hash when a call leaves their order; shorter ones by a scan. */
+    private static final int SCANNED = 256;
+
+    List<Question> log = new ArrayList<>();
+    final List<Question> pool = new ArrayList<>(0);
+    private List<Question> next = new ArrayList<>();
+    private int cursor;
+    private Map<Integer, List<Question>> index;
+    /** This run used a question without an answer. */
+    boolean guessed;
+    /** This run asked a question not sent yet: the next batch takes it. */
+    boolean asking;
+
+    /** Starts a run: the log is read from its beginning. */
+    void begin() {
+        cursor = 0;
+        guessed = false;
+        asking = false;
+        next = new ArrayList<>(log.size());
+        index = null;
+    }
+
+    /** Ends a run: the questions it used are the log. */
+    void end() {
+        log = next;
+        next = null;
+        index = null;
+    }
+
+    /** Notes that this run used {@code q}'s answer, which is unknown: a guess, and a question to send unless it was. */
+    void unknown(Question q) {
+        guessed = true;
+        asking |= !q.sent;
+    }
+
+    Question intersect(Object target, Ray ray, IntersectionRecord out) {
+        if (cursor < log.size() && log.get(cursor).matchesIntersect(target, ray, out)) {
+            return used(log.get(cursor++));
+        }
+        int hash = Question.intersectHash(target, ray, out);
+        for (Question q : candidates(hash)) {
+            if (q.matchesIntersect(target, ray, out)) {
+                return used(q);
+            }
+        }
+        for (Question q : pool) {
+            if (q.matchesIntersect(target, ray, out)) {
+                return used(q);
+            }
+        }
+        return used(Question.intersect(target, ray, out));
+    }
+
+    Question anyHit(Object target, Ray ray) {
+        if (cursor < log.size() && log.get(cursor).matchesAnyHit(target, ray)) {
+            return used(log.get(cursor++));
+        }
+        for (Question q : candidates(Question.anyHitHash(target, ray))) {
+            if (q.matchesAnyHit(target, ray)) {
+                return used(q);
+            }
+        }
+        return used(Question.anyHit(target, ray));
+    }
+
+    Question uv(Question.Kind kind, Object target, double u, double v) {
+        if (cursor < log.size() && log.get(cursor).matchesUv(kind, target, u, v)) {
+            return used(log.get(cursor++));
+        }
+        for (Question q : candidates(Question.uvHash(target, u, v))) {
+            if (q.matchesUv(kind, target, u, v)) {
+                return used(q);
+            }
+        }
+        return used(Question.uv(kind, target, u, v));
+    }
+
+    /** The log's questions that may match a call whose inputs hash to {@code hash}: the whole log when it is short, else those of that hash. */
+    private List<Question> candidates(int hash) {
+        if (log.size() <= SCANNED) {
+            return log;
+        }
+        if (index == null) {
+            index = new HashMap<>();
+            for (Question q : log) {
+                index.computeIfAbsent(q.hash(), h -> new ArrayList<>(1)).add(q);
+            }
+        }
+        return index.getOrDefault(hash, List.of());
+    }
+
+    private Question used(Question q) {
+        next.add(q);
+        return q;
+    }
+}
