@@ -333,41 +333,56 @@ final class RoundBatch {
         return value == null ? Question.NULL : value;
     }
 
-    /** A group's answers: each asked question's, and the rest (the added candidates too) into the owner's pool. */
+    /** A group's answers: each asked question's, and the rest (the added candidates' too) into the owner's pool. */
     private void readGroup(WireIn in, JudgeObjects objects, Group g) {
-        List<Question> candidates = new ArrayList<>(g.candidates);
+        int asked = g.candidates.size();
         int extra = in.varint();
-        if (extra > Batches.MAX_CANDIDATES) {
+        if (extra > Batches.MAX_CANDIDATES - asked) {
             throw new WireError(extra + " added candidates");
         }
+        List<Double> ends = new ArrayList<>(asked + extra);
+        g.candidates.forEach(c -> ends.add(c.end));
         for (int e = 0; e < extra; e++) {
-            double end = in.f64();
+            ends.add(in.f64());
+        }
+        Answer[][] answers = new Answer[g.targets.size()][];
+        for (int t = 0; t < answers.length; t++) {
+            answers[t] = readTarget(in, objects, g.ray.start, ends);
+        }
+        // Each added candidate's record is what a hit left: the record before the candidate it follows, changed by that hit.
+        List<IntersectionRecord> befores = new ArrayList<>(asked + extra);
+        g.candidates.forEach(c -> befores.add(c.before));
+        for (int e = 0; e < extra; e++) {
+            int t = in.varint();
+            int c = in.varint();
+            if (t >= answers.length || c >= befores.size() || answers[t][c] == null || !answers[t][c].hit) {
+                throw new WireError("an added candidate that follows no hit");
+            }
             IntersectionRecord before = new IntersectionRecord();
-            Records.read(in, before, objects.reader());
-            candidates.add(Question.answered(null, g.ray.origin, g.ray.direction, g.ray.start, end, before, null));
+            before.set(befores.get(c));
+            Records.apply(answers[t][c].mask, answers[t][c].written, before);
+            befores.add(before);
         }
         // The asked questions by target and candidate; every other answer goes to the pool.
-        Question[][] asked = new Question[g.targets.size()][g.candidates.size()];
+        Question[][] byPlace = new Question[g.targets.size()][asked];
         for (int k = 0; k < g.asked.size(); k++) {
             int[] place = g.places.get(k);
             if (place[1] >= 0) {
-                asked[place[0]][place[1]] = g.asked.get(k);
+                byPlace[place[0]][place[1]] = g.asked.get(k);
             }
         }
-        for (int t = 0; t < g.targets.size(); t++) {
-            Answer[] answers = readTarget(in, objects, g.ray.start, candidates);
-            for (int c = 0; c < answers.length; c++) {
-                if (answers[c] == null) {
+        for (int t = 0; t < answers.length; t++) {
+            for (int c = 0; c < answers[t].length; c++) {
+                if (answers[t][c] == null) {
                     continue;
                 }
-                Question q = c < g.candidates.size() ? asked[t][c] : null;
+                Question q = c < asked ? byPlace[t][c] : null;
                 if (q != null) {
-                    q.answer = answers[c];
+                    q.answer = answers[t][c];
                 } else if (g.targets.size() <= Batches.MAX_SEARCHED) {
                     // What a search asks next; a loop over hundreds of targets is no search, and its pool would be large.
-                    Question cand = candidates.get(c);
-                    g.owner.pool.add(Question.answered(g.targets.get(t), g.ray.origin, g.ray.direction, g.ray.start, cand.end,
-                            cand.before, answers[c]));
+                    g.owner.pool.add(Question.answered(g.targets.get(t), g.ray.origin, g.ray.direction, g.ray.start, ends.get(c),
+                            befores.get(c), answers[t][c]));
                 }
             }
         }
@@ -380,8 +395,8 @@ final class RoundBatch {
     }
 
     /** One target's answers by candidate (null where it needed more): all missed, or a base and the answers its rule does not predict. */
-    private static Answer[] readTarget(WireIn in, JudgeObjects objects, double start, List<Question> candidates) {
-        Answer[] byCandidate = new Answer[candidates.size()];
+    private static Answer[] readTarget(WireIn in, JudgeObjects objects, double start, List<Double> ends) {
+        Answer[] byCandidate = new Answer[ends.size()];
         int form = in.u8();
         if (form == Batches.ALL_MISSED) {
             java.util.Arrays.fill(byCandidate, Answer.MISS);
@@ -391,23 +406,23 @@ final class RoundBatch {
             throw new WireError("a target's answers of form " + form);
         }
         int base = in.varint() - 1;
-        if (base >= candidates.size()) {
+        if (base >= ends.size()) {
             throw new WireError("a base answer of candidate " + base);
         }
         Answer baseAnswer = base < 0 ? null : Answer.read(in, objects.reader());
         if (baseAnswer != null) {
             for (int c = 0; c < byCandidate.length; c++) {
-                byCandidate[c] = baseAnswer.predict(start, candidates.get(c).end);
+                byCandidate[c] = baseAnswer.predict(start, ends.get(c));
             }
         }
         int explicit = in.varint();
-        if (explicit > candidates.size()) {
-            throw new WireError(explicit + " explicit answers of " + candidates.size() + " candidates");
+        if (explicit > ends.size()) {
+            throw new WireError(explicit + " explicit answers of " + ends.size() + " candidates");
         }
         for (int e = 0; e < explicit; e++) {
             int c = in.varint();
-            if (c >= candidates.size()) {
-                throw new WireError("candidate " + c + " of " + candidates.size());
+            if (c >= ends.size()) {
+                throw new WireError("candidate " + c + " of " + ends.size());
             }
             int kind = in.u8();
             if (kind == Batches.NEEDS) {

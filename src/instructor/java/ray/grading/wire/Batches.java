@@ -25,11 +25,13 @@ package ray.grading.wire;
  * answer.</li>
  * </ol>
  *
- * <p>The answer: for each intersect ray, the candidates the worker added (count, then each), then for
- * each target {@link #ALL_MISSED}, or {@link #WITH_BASE}, the index of its base answer plus one (0 for
+ * <p>The answer: for each intersect ray, the ends of the candidates the worker added (count, then each),
+ * then for each target {@link #ALL_MISSED}, or {@link #WITH_BASE}, the index of its base answer plus one (0 for
  * none) and that answer, and the candidates whose answer the base's rule does not predict: a count,
  * then each index with {@link #ANSWERED} and the answer, or {@link #NEEDS} when it needs a judge-side
- * answer it was not given (asked again next round); counts and indices here are varints; then each generateRay answer (a status, then a ray or null, or what was thrown) and each
+ * answer it was not given (asked again next round), then for each added candidate the target and the
+ * candidate whose hit it follows (its record is the record that hit left); counts and indices here
+ * are varints; then each generateRay answer (a status, then a ray or null, or what was thrown) and each
  * getTexColor answer (a status, then a vector or null, or what was thrown), and each any-hit answer
  * (a status, then yes or no, or what was thrown, or {@link Protocol#NEED}); then the judge-side
  * answers needed: a count of base answers (handle and ray: seven numbers), a count of exact ones

@@ -131,6 +131,19 @@ final class BatchCalls {
 
     /** A BATCH message; its answer. */
     WireOut answer(WireIn in) {
+        long t0 = System.nanoTime();
+        WireOut result = answerTimed(in);
+        if (Boolean.getBoolean("ray1.debugWorker")) {
+            System.err.printf("worker batch: %.3f s (parse %.3f, evaluate %.3f)%n", (System.nanoTime() - t0) / 1e9, (parsed - t0) / 1e9,
+                    (evaluated - parsed) / 1e9);
+        }
+        return result;
+    }
+
+    private long parsed;
+    private long evaluated;
+
+    private WireOut answerTimed(WireIn in) {
         objects.define(in);
         objects.settle();
         int rayCount = in.count(Protocol.MAX_ENTRIES, "rays");
@@ -174,6 +187,7 @@ final class BatchCalls {
             running.exact.put(new Key(handle, ray, end, before), Answer.read(in, objects));
         }
         in.end();
+        parsed = System.nanoTime();
         WireOut answer = new WireOut();
         link.inBatch(running);
         try {
@@ -192,6 +206,7 @@ final class BatchCalls {
         } finally {
             link.inBatch(null);
         }
+        evaluated = System.nanoTime();
         answer.i32(running.neededBases.size());
         for (Key need : running.neededBases.keySet()) {
             answer.i32(need.handle);
@@ -257,10 +272,13 @@ final class BatchCalls {
         return calls;
     }
 
-    /** A segment end and the record before, as a search asks. */
+    /** A segment end and the record before, as a search asks; an added one says which hit it follows. */
     private static final class Candidate {
         final double end;
         final IntersectionRecord before;
+        /** For an added candidate: the target and the candidate whose hit left the record so. */
+        int fromTarget;
+        int fromCandidate;
 
         Candidate(double end, IntersectionRecord before) {
             this.end = end;
@@ -306,23 +324,26 @@ final class BatchCalls {
                         IntersectionRecord after = new IntersectionRecord();
                         after.set(candidate.before);
                         Records.apply(a.mask, a.written, after);
-                        addCandidate(a.written.t, after);
-                        addCandidate(Math.nextUp(a.written.t), after);
+                        addCandidate(a.written.t, after, t, c);
+                        addCandidate(Math.nextUp(a.written.t), after, t, c);
                     }
                 }
             }
             running.current = -1;
+            // The added candidates: their ends, and, after the answers, which hit each follows (its record is that hit's).
             out.varint(candidates.size() - asked);
             for (Candidate c : candidates.subList(asked, candidates.size())) {
                 out.f64(c.end);
-                Records.write(out, c.before, objects);
             }
             for (int t = 0; t < targets.size(); t++) {
                 writeTarget(answers.get(t), out);
             }
+            for (Candidate c : candidates.subList(asked, candidates.size())) {
+                out.varint(c.fromTarget).varint(c.fromCandidate);
+            }
         }
 
-        private void addCandidate(double end, IntersectionRecord before) {
+        private void addCandidate(double end, IntersectionRecord before, int fromTarget, int fromCandidate) {
             if (candidates.size() >= Batches.MAX_CANDIDATES) {
                 return;
             }
@@ -331,7 +352,10 @@ final class BatchCalls {
                     return;
                 }
             }
-            candidates.add(new Candidate(end, before));
+            Candidate added = new Candidate(end, before);
+            added.fromTarget = fromTarget;
+            added.fromCandidate = fromCandidate;
+            candidates.add(added);
         }
 
         /**
