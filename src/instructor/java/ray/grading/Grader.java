@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
@@ -226,13 +227,14 @@ public final class Grader implements Callable<Integer> {
         if (sandbox.warning() != null) {
             System.err.println("warning: " + sandbox.warning());
         }
-        List<TestOutcome> outcomes = new ArrayList<>();
+        // Each task's files compile on their own; the tasks that compiled are judged in one judge, each
+        // with its own worker, running its own classes.
+        Map<Integer, List<TestOutcome>> byTask = new java.util.TreeMap<>();
+        Path workers = work.resolve("workers");
+        Files.createDirectories(workers);
+        Set<Integer> judged = new TreeSet<>();
         for (int task : new TreeSet<>(studentFiles.values())) {
             if (onlyTask != null && task != onlyTask) {
-                continue;
-            }
-            if (System.nanoTime() > deadline) {
-                outcomes.addAll(allFailed(task, pastDeadline()));
                 continue;
             }
             Map<String, Path> taskFiles = new LinkedHashMap<>();
@@ -241,18 +243,59 @@ public final class Grader implements Callable<Integer> {
                     taskFiles.put(path, file);
                 }
             });
-            long taskStart = System.nanoTime();
-            outcomes.addAll(gradeTask(task, taskFiles, instructor, studentFiles, output));
-            if (Boolean.getBoolean("ray1.debugTimes")) {
-                System.err.printf("task %d: %.2f s%n", task, (System.nanoTime() - taskStart) / 1e9);
+            String refused = compileTask(task, taskFiles, instructor, output);
+            if (refused != null) {
+                byTask.put(task, allFailed(task, refused));
+            } else {
+                sandbox.containment(work.resolve("task-" + task).resolve("classes"), "task-" + task).write(workers.resolve("task-" + task));
+                judged.add(task);
+            }
+        }
+        debug("compiled the tasks");
+        if (!judged.isEmpty()) {
+            TestProcess tests = timed(new TestProcess(instructor, instructor.resolve("classes"), classpath, work.resolve("test-run"))
+                    .judging(GradingClasses.standIns(instructor), workers));
+            List<TestOutcome> ran;
+            try {
+                ran = tests.runTasks(judged);
+            } catch (IllegalStateException e) {
+                ran = List.of();
+                for (int task : judged) {
+                    byTask.put(task, allFailed(task, "the tests could not run: " + e.getMessage()));
+                }
+            } finally {
+                // Nothing of the student's outlives the tests.
+                sandbox.endStrayProcesses();
+            }
+            debug("judged");
+            for (int task : judged) {
+                byTask.putIfAbsent(task, judged(task, ran));
+            }
+            debug("listed");
+        }
+        List<TestOutcome> outcomes = new ArrayList<>();
+        for (Map.Entry<Integer, List<TestOutcome>> task : byTask.entrySet()) {
+            outcomes.addAll(task.getValue());
+            if (judged.contains(task.getKey())) {
+                nameMistakes(instructor, task.getKey(), task.getValue(), studentFiles, work.resolve("task-" + task.getKey()).resolve("mistakes"));
             }
         }
         return outcomes;
     }
 
-    /** One task: its files compiled against the handout, checked to hold only their own classes, and its tests judged. */
-    private List<TestOutcome> gradeTask(int task, Map<String, Path> taskFiles, Path instructor, Map<String, Integer> studentFiles,
-            StringBuilder output) throws IOException, InterruptedException {
+    private final long started = System.nanoTime();
+
+    private void debug(String what) {
+        if (Boolean.getBoolean("ray1.debugTimes")) {
+            System.err.printf("%.2f s: %s%n", (System.nanoTime() - started) / 1e9, what);
+        }
+    }
+
+    /**
+     * Compiles one task's files against the handout into task-N/classes; why its tests cannot run (they
+     * do not compile, or define classes they may not), or null.
+     */
+    private String compileTask(int task, Map<String, Path> taskFiles, Path instructor, StringBuilder output) throws IOException {
         Path taskDir = work.resolve("task-" + task);
         List<Path> sources = new ArrayList<>();
         for (Map.Entry<String, Path> file : taskFiles.entrySet()) {
@@ -264,33 +307,22 @@ public final class Grader implements Callable<Integer> {
         Path classes = taskDir.resolve("classes");
         CompileResult taskCompiled = ProjectCompiler.compile(taskDir, sources, classes, GradingClasses.handout(instructor).toString());
         String files = String.join(", ", taskFiles.keySet());
+        String why = null;
         if (!taskCompiled.ok()) {
             // Only this task's tests fail: each other task is graded with its own files, which may compile.
-            String why = "Task " + task + "'s files (" + files + ") do not compile with the rest of the handout, so its"
+            why = "Task " + task + "'s files (" + files + ") do not compile with the rest of the handout, so its"
                     + " tests could not run; the other tasks are graded on their own. (If they compile in your project,"
                     + " do they use something you changed in another task's file?)\n" + taskCompiled.messages();
+        } else {
+            String refused = StudentClasses.refused(classes, taskFiles.keySet());
+            if (refused != null) {
+                why = "Task " + task + "'s files (" + files + ") were not graded: " + refused;
+            }
+        }
+        if (why != null) {
             output.append(why).append('\n');
-            return allFailed(task, why);
         }
-        String refused = StudentClasses.refused(classes, taskFiles.keySet());
-        if (refused != null) {
-            String why = "Task " + task + "'s files (" + files + ") were not graded: " + refused;
-            output.append(why).append('\n');
-            return allFailed(task, why);
-        }
-        Path setup = taskDir.resolve("worker");
-        sandbox.containment(classes, "task-" + task).write(setup);
-        TestProcess tests = timed(new TestProcess(instructor, instructor.resolve("classes"), classpath, taskDir.resolve("test-run"))
-                .judging(GradingClasses.standIns(instructor, task), setup));
-        List<TestOutcome> taskOutcomes;
-        try {
-            taskOutcomes = judged(task, runOrFail(tests, task));
-        } finally {
-            // Nothing of the student's outlives its task's tests.
-            sandbox.endStrayProcesses();
-        }
-        nameMistakes(instructor, task, taskOutcomes, studentFiles, taskDir.resolve("mistakes"));
-        return taskOutcomes;
+        return why;
     }
 
     /**
@@ -367,15 +399,6 @@ public final class Grader implements Callable<Integer> {
         return "not run: grading stopped at its time limit of " + timeLimitSeconds + " s, before this test finished;"
                 + " the points of the tests before it count. (Do some tests take many seconds each? A correct"
                 + " submission is graded in well under a minute.)";
-    }
-
-    /** The task's tests, or all of them failed with the reason when the test JVM cannot run them at all. */
-    private List<TestOutcome> runOrFail(TestProcess tests, int task) throws IOException, InterruptedException {
-        try {
-            return tests.run(task);
-        } catch (IllegalStateException e) {
-            return allFailed(task, "the tests could not run: " + e.getMessage());
-        }
     }
 
     /**

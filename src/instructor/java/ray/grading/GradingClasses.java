@@ -10,7 +10,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeMap;
 import java.util.jar.JarEntry;
 import java.util.jar.JarFile;
 import java.util.stream.Collectors;
@@ -24,9 +23,9 @@ import ray.grading.worker.WorkerMain;
  * with every student class replaced by the handout's stub) and the worker's own code (the wire format
  * and {@link WorkerMain}), and nothing else: no test, no hidden test, no solution. A student's files
  * compile against it, and run on it with their classes first;</li>
- * <li>{@code standins/task-N/}, the judge's: a stand-in for each of task N's student classes
- * ({@link StandInSources}), put first on the judge's class path so that the tests of task N call the
- * worker for those classes and the solution's for every other task.</li>
+ * <li>{@code standins/}, the judge's: the stand-in of every student class ({@link StandInSources}),
+ * put first on the judge's class path: while task N is graded, the tests call the worker for task
+ * N's classes and run the solution for every other task's.</li>
  * </ul>
  */
 final class GradingClasses {
@@ -40,8 +39,8 @@ final class GradingClasses {
         return tree.resolve("handout");
     }
 
-    static Path standIns(Path tree, int task) {
-        return tree.resolve("standins").resolve("task-" + task);
+    static Path standIns(Path tree) {
+        return tree.resolve("standins");
     }
 
     /**
@@ -55,50 +54,34 @@ final class GradingClasses {
         ProjectTree.deleteRecursively(handout);
         Files.createDirectories(handout);
         copyMainClasses(tree, classes, handout, studentFiles.keySet());
-        Path stubSources = tree.resolve("stubs");
         List<Path> stubs = new ArrayList<>();
-        Map<Integer, List<Path>> standInSources = new TreeMap<>();
+        List<Path> standIns = new ArrayList<>();
         for (Map.Entry<String, Integer> file : studentFiles.entrySet()) {
             String solution = Files.readString(tree.resolve(file.getKey()), StandardCharsets.UTF_8);
-            String stub = SolutionMarkers.studentVersion(solution, file.getKey());
-            Path stubFile = stubSources.resolve(file.getKey());
+            Path stubFile = tree.resolve("stubs").resolve(file.getKey());
             Files.createDirectories(stubFile.getParent());
-            Files.writeString(stubFile, stub, StandardCharsets.UTF_8);
+            Files.writeString(stubFile, SolutionMarkers.studentVersion(solution, file.getKey()), StandardCharsets.UTF_8);
             stubs.add(stubFile);
-            Path standIn = tree.resolve("standins-src").resolve("task-" + file.getValue()).resolve(file.getKey());
+            Path standIn = tree.resolve("standins-src").resolve(file.getKey());
             Files.createDirectories(standIn.getParent());
-            Files.writeString(standIn, StandInSources.of(stub, file.getKey()), StandardCharsets.UTF_8);
-            standInSources.computeIfAbsent(file.getValue(), t -> new ArrayList<>()).add(standIn);
+            Files.writeString(standIn, StandInSources.of(solution, file.getKey(), file.getValue()), StandardCharsets.UTF_8);
+            standIns.add(standIn);
         }
-        CompileResult stubsCompiled = ProjectCompiler.compileInto(tree, stubs, handout, handout.toString());
-        if (!stubsCompiled.ok()) {
-            throw new IllegalStateException("the handout's stubs do not compile against the framework:\n" + stubsCompiled.messages());
-        }
-        copyWorkerClasses(handout);
-        // Every stand-in in one compiler run, then each task's classes into its own folder.
-        Path compiledStandIns = tree.resolve("standins-all");
-        List<Path> allStandIns = new ArrayList<>();
-        standInSources.values().forEach(allStandIns::addAll);
-        CompileResult compiled = ProjectCompiler.compile(tree, allStandIns, compiledStandIns, classes + File.pathSeparator + classpath);
-        if (!compiled.ok()) {
-            throw new IllegalStateException("the stand-ins do not compile:\n" + compiled.messages());
-        }
-        for (Map.Entry<String, Integer> file : studentFiles.entrySet()) {
-            String type = file.getKey().substring("src/main/java/".length(), file.getKey().length() - ".java".length());
-            Path folder = compiledStandIns.resolve(type).getParent();
-            String simple = type.substring(type.lastIndexOf('/') + 1);
-            try (Stream<Path> files = Files.list(folder)) {
-                for (Path f : files.collect(Collectors.toList())) {
-                    String name = f.getFileName().toString();
-                    if (name.equals(simple + ".class") || name.startsWith(simple + "$")) {
-                        Path target = standIns(tree, file.getValue()).resolve(compiledStandIns.relativize(f).toString());
-                        Files.createDirectories(target.getParent());
-                        Files.copy(f, target);
-                    }
-                }
+        if (!stubs.isEmpty()) {
+            CompileResult stubsCompiled = ProjectCompiler.compileInto(tree, stubs, handout, handout.toString());
+            if (!stubsCompiled.ok()) {
+                throw new IllegalStateException("the handout's stubs do not compile against the framework:\n" + stubsCompiled.messages());
             }
         }
-        ProjectTree.deleteRecursively(compiledStandIns);
+        copyWorkerClasses(handout);
+        ProjectTree.deleteRecursively(standIns(tree));
+        Files.createDirectories(standIns(tree));
+        if (!standIns.isEmpty()) {
+            CompileResult compiled = ProjectCompiler.compile(tree, standIns, standIns(tree), classes + File.pathSeparator + classpath);
+            if (!compiled.ok()) {
+                throw new IllegalStateException("the stand-ins do not compile:\n" + compiled.messages());
+            }
+        }
     }
 
     /** The tree's classes compiled from src/main/java, but the student files': the framework. */

@@ -94,10 +94,11 @@ final class MistakeEvidence {
                 // As a submission's code runs: in a worker, asked by the judge's stand-ins. The mistake is the
                 // instructor's code, so its worker runs as the grader's user.
                 try (Sandbox sandbox = Sandbox.create(GradingClasses.handout(runIn), false, 0)) {
-                    Path setup = out.resolve("worker");
-                    sandbox.containment(classes, "mistake").write(setup);
+                    Path workers = out.resolve("workers");
+                    Files.createDirectories(workers);
+                    sandbox.containment(classes, "mistake").write(workers.resolve("task-" + mistake.task));
                     ran = Optional.of(FailureSignatures.of(new TestProcess(runIn, runIn.resolve("classes"), classpathOr(libraries),
-                            out.resolve("tests")).judging(GradingClasses.standIns(runIn, mistake.task), setup).withoutRenderTests()
+                            out.resolve("tests")).judging(GradingClasses.standIns(runIn), workers).withoutRenderTests()
                             .run(mistake.task)));
                 } catch (IllegalStateException e) {
                     // The judge could not run them: no evidence, so no name from them.

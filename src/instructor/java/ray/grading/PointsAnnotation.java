@@ -24,6 +24,17 @@ public final class PointsAnnotation {
         return found;
     }
 
+    /** A test class's @Points: on the class, else on its first test method that has one; null for none. */
+    static Annotation ofClass(Class<?> type) {
+        Annotation found = find(List.of(type.getAnnotations()));
+        for (Method m : type.getMethods()) {
+            if (found == null) {
+                found = find(List.of(m.getAnnotations()));
+            }
+        }
+        return found;
+    }
+
     /** The value of one of its elements: {@code value}, {@code task}, {@code bonus}, {@code visibility}. */
     public static Object element(Annotation points, String name) {
         try {

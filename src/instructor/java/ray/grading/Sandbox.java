@@ -138,8 +138,11 @@ final class Sandbox implements AutoCloseable {
             command.addAll(List.of(command("setpriv"), "--reuid=" + ids[0], "--regid=" + ids[1], "--clear-groups", "--no-new-privs", "--"));
         }
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
-        // The JVM's own messages go to standard error: standard output carries only the protocol.
-        command.addAll(List.of(HEAP, "-XX:+DisplayVMOutputToStderr", "-Xshare:auto", "-Djava.awt.headless=true",
+        // The JVM's own messages go to standard error (its warnings default to standard output), since standard
+        // output carries only the protocol; and no performance-data file, which workers in PID namespaces of
+        // their own (each one's JVM is the same pid) would contend for.
+        command.addAll(List.of(HEAP, "-XX:+DisplayVMOutputToStderr", "-Xlog:disable", "-Xlog:all=warning:stderr", "-XX:-UsePerfData",
+                "-Xshare:auto", "-Djava.awt.headless=true",
                 "-Duser.home=" + folder.resolve("home"), "-Djava.io.tmpdir=" + folder.resolve("tmp"),
                 "-cp", copy + File.pathSeparator + folder.resolve("handout"), WorkerMain.class.getName()));
         Map<String, String> environment = new LinkedHashMap<>();

@@ -21,13 +21,14 @@ import javax.tools.SimpleJavaFileObject;
 import javax.tools.ToolProvider;
 
 /**
- * The judge's stand-in for a student class, written from the student's file itself (the handout's
- * version of it, as {@link SolutionMarkers} makes it): the same package, imports, class name,
- * superclass and constructors, with the body of the method that holds the {@code TODO(Task N)}
- * comment replaced by a call to the worker (ray.grading.judge.StudentCalls), and three members added:
- * the stand-in's bookkeeping, a complete() that notes it ran, and the accessor of ray.grading.judge.StandIn.
- * So the stand-ins follow the student files with no list to keep: a new task's file gets its
- * stand-in as long as its method is one StudentCalls can forward ({@link #FORWARDS}).
+ * The judge's class for a student class, written from the instructor's file itself (the solution,
+ * whose markers are comments): the same class, whose method that holds the {@code TODO(Task N)}
+ * comment first asks whether task N is being graded, and then calls the worker
+ * (ray.grading.judge.StudentCalls) instead of running the solution, and with the members of
+ * ray.grading.judge.StandIn added: the object's bookkeeping, a complete() that notes it ran, and
+ * whether its calls go to the worker. So one judge grades every task, each with the solution of
+ * every other, and the stand-ins follow the student files with no list to keep: a new task's file gets
+ * its stand-in as long as its method is one StudentCalls can forward ({@link #FORWARDS}).
  */
 final class StandInSources {
     /** The student methods the judge can forward, by name and parameter count, and StudentCalls' method for each. */
@@ -36,8 +37,9 @@ final class StandInSources {
     private StandInSources() {
     }
 
-    /** The stand-in's source for the student file {@code path} whose handout version is {@code stub}. */
-    static String of(String stub, String path) {
+    /** The stand-in's source for the student file {@code path} of task {@code task}, whose instructor's version is {@code source}. */
+    static String of(String instructorSource, String path, int task) {
+        String stub = instructorSource;
         JavaCompiler compiler = ToolProvider.getSystemJavaCompiler();
         if (compiler == null) {
             throw new IllegalStateException("no Java compiler in this runtime: grading needs a JDK");
@@ -48,14 +50,14 @@ final class StandInSources {
                 return stub;
             }
         };
-        JavacTask task = (JavacTask) compiler.getTask(null, null, d -> { }, List.of("--release", "17", "-proc:none"), null, List.of(file));
+        JavacTask parser = (JavacTask) compiler.getTask(null, null, d -> { }, List.of("--release", "17", "-proc:none"), null, List.of(file));
         CompilationUnitTree unit;
         try {
-            unit = task.parse().iterator().next();
+            unit = parser.parse().iterator().next();
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
-        SourcePositions positions = Trees.instance(task).getSourcePositions();
+        SourcePositions positions = Trees.instance(parser).getSourcePositions();
         String className = path.substring(path.lastIndexOf('/') + 1).replace(".java", "");
         ClassTree type = null;
         for (Tree t : unit.getTypeDecls()) {
@@ -94,11 +96,12 @@ final class StandInSources {
         // Edits by position, made from the end so that earlier positions stay valid.
         TreeMap<Integer, String[]> edits = new TreeMap<>();
         int classEnd = (int) positions.getEndPosition(unit, type) - 1;
-        edits.put(classEnd, new String[] {"", members(surface)});
-        long bodyStart = positions.getStartPosition(unit, studentMethod.getBody());
-        long bodyEnd = positions.getEndPosition(unit, studentMethod.getBody());
-        edits.put((int) bodyStart, new String[] {stub.substring((int) bodyStart, (int) bodyEnd),
-                "{\n        return StudentCalls." + forward + "(this, " + String.join(", ", parameters) + ");\n    }"});
+        String packageName = unit.getPackageName() == null ? "" : unit.getPackageName().toString() + ".";
+        edits.put(classEnd, new String[] {"", members(surface, task, packageName + className)});
+        // Right after the method's opening brace: while task N is graded, the worker answers.
+        int bodyStart = (int) positions.getStartPosition(unit, studentMethod.getBody()) + 1;
+        edits.put(bodyStart, new String[] {"", "\n        if (StudentCalls.remote(" + task + ")) {\n            return StudentCalls." + forward
+                + "(this, " + String.join(", ", parameters) + ");\n        }"});
         List<? extends Tree> interfaces = type.getImplementsClause();
         Tree after = interfaces.isEmpty() ? type.getExtendsClause() : interfaces.get(interfaces.size() - 1);
         if (after == null) {
@@ -119,8 +122,18 @@ final class StandInSources {
         return "// The judge's stand-in for " + path + ", written by ray.grading.StandInSources: do not edit.\n" + source;
     }
 
-    private static String members(boolean surface) {
+    private static String members(boolean surface, int task, String studentClass) {
         List<String> lines = new ArrayList<>();
+        lines.add("");
+        lines.add("    @Override");
+        lines.add("    public boolean ray1Remote() {");
+        lines.add("        return StudentCalls.remote(" + task + ");");
+        lines.add("    }");
+        lines.add("");
+        lines.add("    @Override");
+        lines.add("    public String ray1StudentClass() {");
+        lines.add("        return \"" + studentClass + "\";");
+        lines.add("    }");
         lines.add("");
         lines.add("    private StandInState ray1State;");
         lines.add("");

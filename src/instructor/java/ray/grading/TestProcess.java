@@ -155,7 +155,7 @@ public final class TestProcess {
     /** The graded tests the classes hold (for task {@code task}, or all when null), without running them. */
     public List<TestOutcome> list(Integer task) throws IOException, InterruptedException {
         Path events = eventsFile("list");
-        watch(launch(events, task, Set.of(), true, ""), events);
+        watch(launch(events, task == null ? null : Set.of(task), Set.of(), true, ""), events);
         List<TestOutcome> tests = new ArrayList<>();
         for (Map<String, Object> e : read(events)) {
             if ("test".equals(e.get("event"))) {
@@ -167,6 +167,11 @@ public final class TestProcess {
 
     /** Runs the graded tests (of {@code task}, or all when null), in order, and returns every outcome. */
     public List<TestOutcome> run(Integer task) throws IOException, InterruptedException {
+        return runTasks(task == null ? null : Set.of(task));
+    }
+
+    /** Runs the graded tests of {@code tasks} (all when null), task by task, and returns every outcome. */
+    public List<TestOutcome> runTasks(Set<Integer> task) throws IOException, InterruptedException {
         Files.createDirectories(workDir);
         Map<String, TestOutcome> results = new LinkedHashMap<>();
         Set<String> skip = new LinkedHashSet<>();
@@ -239,13 +244,13 @@ public final class TestProcess {
      * The outcomes when the deadline came: those finished, then every other test of the run (the one
      * running, and those never started) failed with the deadline's reason, in the listed order.
      */
-    private List<TestOutcome> stoppedAtDeadline(Integer task, Map<String, TestOutcome> results) throws IOException, InterruptedException {
+    private List<TestOutcome> stoppedAtDeadline(Set<Integer> tasks, Map<String, TestOutcome> results) throws IOException, InterruptedException {
         long deadlineWas = deadline;
         deadline = Long.MAX_VALUE;
         try {
             List<TestOutcome> all = new ArrayList<>(results.values());
-            for (TestOutcome t : list(task)) {
-                if (!results.containsKey(t.id())) {
+            for (TestOutcome t : list(null)) {
+                if ((tasks == null || tasks.contains(t.task())) && !results.containsKey(t.id())) {
                     all.add(t.failedWith(pastDeadline));
                 }
             }
@@ -283,7 +288,7 @@ public final class TestProcess {
         return events;
     }
 
-    private Process launch(Path events, Integer task, Set<String> skip, boolean listOnly, String unfinished) throws IOException {
+    private Process launch(Path events, Set<Integer> tasks, Set<String> skip, boolean listOnly, String unfinished) throws IOException {
         String self = Path.of(java.net.URI.create(
                 TestRunnerMain.class.getProtectionDomain().getCodeSource().getLocation().toString())).toString();
         String fullClasspath = (standIns != null ? standIns + File.pathSeparator : "") + classesDir + File.pathSeparator + classpath
@@ -304,9 +309,9 @@ public final class TestProcess {
             }
         }
         command.addAll(List.of("-cp", fullClasspath, TestRunnerMain.class.getName(), events.toString()));
-        if (task != null) {
+        if (tasks != null) {
             command.add("--task");
-            command.add(task.toString());
+            command.add(tasks.stream().sorted().map(String::valueOf).collect(java.util.stream.Collectors.joining(",")));
         }
         for (String id : skip) {
             command.add("--skip");

@@ -11,8 +11,8 @@ import ray.surface.Surface;
  * Which judge-side surfaces answer as the contract says, so that the worker may derive their answers
  * to a ray's shorter segments from one answer with an endless segment ({@link ray.grading.wire.Answer}'s
  * rule) instead of asking the judge for each: a surface certified here is of a class of the
- * framework or of the solution (its source is under src/main/java), is no stand-in, and holds only
- * such surfaces. A test's own surfaces (a fixed-hit surface, a hidden test's) are never certified:
+ * framework or of the solution (its source is under src/main/java), is not of the class graded now,
+ * and holds only such surfaces. A test's own surfaces (a fixed-hit surface, a hidden test's) are never certified:
  * they may break the contract on purpose. That the framework's and the solution's surfaces keep it is
  * checked by the grader's own tests (CertifiedSurfacesTest).
  */
@@ -24,7 +24,7 @@ final class Certification {
     synchronized boolean certified(Surface surface) {
         Boolean known = surfaces.get(surface);
         if (known == null) {
-            known = !(surface instanceof StandIn) && fromMain(surface.getClass()) && childrenCertified(surface);
+            known = !StudentCalls.isRemote(surface) && fromMain(surface.getClass()) && childrenCertified(surface);
             surfaces.put(surface, known);
         }
         return known;
@@ -52,11 +52,11 @@ final class Certification {
         });
     }
 
-    /** Whether the surface is a stand-in or holds one (among its parts, at any depth). */
+    /** Whether the surface is of a class graded now, or holds one (among its parts, at any depth). */
     synchronized boolean holdsStandIn(Surface surface) {
         Boolean known = holding.get(surface);
         if (known == null) {
-            known = surface instanceof StandIn;
+            known = StudentCalls.isRemote(surface);
             for (Surface child : surface.children()) {
                 known = known || holdsStandIn(child);
             }

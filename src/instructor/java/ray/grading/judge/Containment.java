@@ -100,7 +100,7 @@ public final class Containment {
         int ended = 0;
         for (int round = 0; round < 50; round++) {
             List<ProcessHandle> left = ProcessHandle.allProcesses()
-                    .filter(p -> p.info().user().map(user::equals).orElse(false)).collect(Collectors.toList());
+                    .filter(p -> p.info().user().map(user::equals).orElse(false) && running(p)).collect(Collectors.toList());
             if (left.isEmpty()) {
                 break;
             }
@@ -110,13 +110,34 @@ public final class Containment {
                 }
             }
             for (ProcessHandle p : left) {
-                try {
-                    p.onExit().get(200, TimeUnit.MILLISECONDS);
-                } catch (Exception e) {
-                    // A zombie waiting for its parent, or one just forked: the next round looks again.
+                for (int wait = 0; wait < 20 && running(p); wait++) {
+                    try {
+                        Thread.sleep(10);
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        return ended;
+                    }
                 }
             }
         }
         return ended;
+    }
+
+    /**
+     * Whether the process can still run anything: alive, and not a zombie (dead, its exit status not yet
+     * collected by a parent, which a container's first process may be slow to do).
+     */
+    private static boolean running(ProcessHandle p) {
+        if (!p.isAlive()) {
+            return false;
+        }
+        try {
+            String stat = Files.readString(Path.of("/proc", String.valueOf(p.pid()), "stat"), StandardCharsets.UTF_8);
+            int close = stat.lastIndexOf(')');
+            char state = close >= 0 && close + 2 < stat.length() ? stat.charAt(close + 2) : 'R';
+            return state != 'Z' && state != 'X';
+        } catch (IOException e) {
+            return false; // gone
+        }
     }
 }

@@ -18,6 +18,11 @@ public final class Judge {
         Rounds.installIfGrading();
     }
 
+    /** From now on the tests are task {@code task}'s: its classes' calls go to the worker (0: none's do). */
+    public static void grade(int task) {
+        StudentCalls.grade(task);
+    }
+
     /** Ends the worker, if one runs, and everything it started. */
     public static void stop() {
         Worker.stopIfStarted();

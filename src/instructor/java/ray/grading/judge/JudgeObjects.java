@@ -92,7 +92,7 @@ final class JudgeObjects {
                 s.sentState = null;
                 byHandle.add(standIn);
                 definitionCount++;
-                definitions.u8(Protocol.DEF_TWIN).i32(s.handle).str(standIn.getClass().getName());
+                definitions.u8(Protocol.DEF_TWIN).i32(s.handle).str(standIn.ray1StudentClass());
                 // A new twin runs complete() if the stand-in ever did (the student's complete() may keep something).
                 s.completePending = s.completed;
             }
@@ -102,11 +102,11 @@ final class JudgeObjects {
             sending.put(standIn, true);
             {
                 WireOut state = new WireOut();
-                FrameworkFields.write(standIn, state, this);
+                FrameworkFields.write(standIn, studentClassOf(standIn), state, this);
                 byte[] bytes = state.toByteArray();
                 if (s.sentState == null || !Arrays.equals(bytes, s.sentState)) {
                     definitionCount++;
-                    definitions.u8(Protocol.DEF_STATE).i32(s.handle).str(standIn.getClass().getName());
+                    definitions.u8(Protocol.DEF_STATE).i32(s.handle).str(standIn.ray1StudentClass());
                     appendRaw(definitions, state);
                     s.sentState = bytes;
                 }
@@ -123,7 +123,7 @@ final class JudgeObjects {
         public void writeSurface(WireOut out, Surface surface) {
             if (surface == null) {
                 out.u8(Protocol.REF_NULL);
-            } else if (surface instanceof StandIn) {
+            } else if (StudentCalls.isRemote(surface)) {
                 out.u8(Protocol.REF_TWIN).i32(sync((StandIn) surface));
             } else if (surface instanceof ForeignSurface) {
                 // What the student's code made is not the judge's to send back: the worker gets nothing in its place.
@@ -240,6 +240,18 @@ final class JudgeObjects {
         }
     }
 
+    /** The stand-in's class that stands for the student's (a test's subclass of it extends it). */
+    private static Class<?> studentClassOf(StandIn standIn) {
+        Class<?> c = standIn.getClass();
+        while (c != null && !c.getName().equals(standIn.ray1StudentClass())) {
+            c = c.getSuperclass();
+        }
+        if (c == null) {
+            throw new IllegalStateException(standIn.getClass() + " does not extend " + standIn.ray1StudentClass());
+        }
+        return c;
+    }
+
     /** Refs for reading the worker's answers (they name objects; they define none). */
     Refs reader() {
         return new Refs() {
@@ -273,7 +285,7 @@ final class JudgeObjects {
                 return null;
             case Protocol.REF_TWIN: {
                 Object o = byHandle(in.i32());
-                if (!(o instanceof StandIn) || !(o instanceof Surface)) {
+                if (!StudentCalls.isRemote(o) || !(o instanceof Surface)) {
                     throw new WireError("the worker named a twin that is no surface");
                 }
                 return (Surface) o;
@@ -281,7 +293,7 @@ final class JudgeObjects {
             case Protocol.REF_JUDGE:
             case Protocol.REF_PLACED: {
                 Object o = byHandle(in.i32());
-                if (o instanceof StandIn || !(o instanceof Surface) || (kind == Protocol.REF_PLACED) != builtAgain.containsKey(o)) {
+                if (StudentCalls.isRemote(o) || !(o instanceof Surface) || (kind == Protocol.REF_PLACED) != builtAgain.containsKey(o)) {
                     throw new WireError("the worker named a judge surface it was never given");
                 }
                 return (Surface) o;
@@ -301,7 +313,7 @@ final class JudgeObjects {
     /** The judge-side surface a worker's callback names. */
     Surface readJudgeSurface(int handle) {
         Object o = byHandle(handle);
-        if (o instanceof StandIn || !(o instanceof Surface)) {
+        if (StudentCalls.isRemote(o) || !(o instanceof Surface)) {
             throw new WireError("the worker called back a judge surface it was never given");
         }
         return (Surface) o;

@@ -280,11 +280,11 @@ final class RoundBatch {
         }
         Certification certification = Worker.get().objects().certification();
         for (Surface child : target.children()) {
-            if (child instanceof StandIn) {
+            if (StudentCalls.isRemote(child)) {
                 plan.addAll(planOf(child, m, depth + 1));
             } else if (child instanceof Transformed && certification.holdsStandIn(child)) {
                 Transformed placed = (Transformed) child;
-                List<Step> inner = placed.placed() instanceof StandIn ? planOf(placed.placed(), m, depth + 1) : List.of();
+                List<Step> inner = StudentCalls.isRemote(placed.placed()) ? planOf(placed.placed(), m, depth + 1) : List.of();
                 if (!inner.isEmpty()) {
                     plan.add(new Step(null, 0, placed, inner));
                 }

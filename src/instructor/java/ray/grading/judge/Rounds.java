@@ -152,7 +152,7 @@ final class Rounds extends AnswerRounds {
             return copy;
         }
         for (Triangle t : set.triangles()) {
-            if (!(t instanceof StandIn)) {
+            if (!StudentCalls.isRemote(t)) {
                 return copy;
             }
         }

@@ -19,7 +19,28 @@ import ray.surface.Surface;
  * once it was read whole.
  */
 public final class StudentCalls {
+    /** The task being graded: its classes' calls go to the worker; every other class runs as the solution. */
+    private static volatile int graded;
+
     private StudentCalls() {
+    }
+
+    /** Whether task {@code task}'s classes are graded now. */
+    public static boolean remote(int task) {
+        return task == graded;
+    }
+
+    /** Whether {@code o} is an object of a class graded now (a stand-in whose calls go to the worker). */
+    static boolean isRemote(Object o) {
+        return o instanceof StandIn && ((StandIn) o).ray1Remote();
+    }
+
+    /** From now on, task {@code task} is graded (0: none); a change of task ends the worker of the last. */
+    static void grade(int task) {
+        if (task != graded) {
+            graded = task;
+            Worker.taskChanged(task);
+        }
     }
 
     /** The student's {@code intersect(out, ray)} on {@code self}'s twin: in a computation's round from its answers, else at once. */

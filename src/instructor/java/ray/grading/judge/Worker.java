@@ -30,6 +30,8 @@ final class Worker {
     private static final long START_LIMIT_SECONDS = 60;
 
     private static Worker current;
+    /** The task whose worker runs (its classes are the student's there), from {@link StudentCalls#grade}. */
+    private static int task;
 
     private final Containment containment;
     private final JudgeObjects objects = new JudgeObjects(new Certification());
@@ -39,20 +41,32 @@ final class Worker {
         this.containment = containment;
     }
 
-    /** The worker of this judge, as the grader set it up. */
+    /**
+     * The worker of the task graded now, as the grader set it up: the file {@code task-N} in the folder
+     * {@link Judge#WORKER_PROPERTY} names.
+     */
     static synchronized Worker get() {
         if (current == null) {
             String setup = System.getProperty(Judge.WORKER_PROPERTY);
             if (setup == null) {
-                throw new IllegalStateException("a stand-in for a student class was used, but no worker is set up (" + Judge.WORKER_PROPERTY + ")");
+                throw new IllegalStateException("a student class was called, but no worker is set up (" + Judge.WORKER_PROPERTY + ")");
             }
             try {
-                current = new Worker(Containment.read(Path.of(setup)));
+                current = new Worker(Containment.read(Path.of(setup).resolve("task-" + task)));
             } catch (IOException e) {
                 throw new IllegalStateException("cannot read the worker's setup: " + e.getMessage(), e);
             }
         }
         return current;
+    }
+
+    /** Another task is graded: its own worker (with its own classes) starts when first asked; the last one ends. */
+    static synchronized void taskChanged(int newTask) {
+        if (current != null) {
+            current.end();
+            current = null;
+        }
+        task = newTask;
     }
 
     /** For the grader's own tests: a worker started by {@code containment}. */
@@ -91,7 +105,11 @@ final class Worker {
                 end();
             }
             long deadline = Math.min(callDeadline(), System.nanoTime() + TimeUnit.SECONDS.toNanos(START_LIMIT_SECONDS));
+            long t0 = System.nanoTime();
             process = WorkerProcess.start(containment.command(), containment, deadline);
+            if (Boolean.getBoolean("ray1.debugTimes")) {
+                System.err.printf("worker started in %.2f s%n", (System.nanoTime() - t0) / 1e9);
+            }
         }
     }
 
@@ -208,8 +226,12 @@ final class Worker {
     /** Ends the worker and everything it started; the next call starts another. */
     synchronized void end() {
         if (process != null) {
+            long t0 = System.nanoTime();
             process.end();
             process = null;
+            if (Boolean.getBoolean("ray1.debugTimes")) {
+                System.err.printf("worker ended in %.2f s%n", (System.nanoTime() - t0) / 1e9);
+            }
         }
         objects.forget();
     }

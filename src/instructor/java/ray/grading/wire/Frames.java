@@ -56,7 +56,14 @@ public final class Frames {
         }
         int length = (header[0] & 0xff) << 24 | (header[1] & 0xff) << 16 | (header[2] & 0xff) << 8 | header[3] & 0xff;
         if (length < 0 || length > MAX_FRAME_BYTES) {
-            throw new WireError("a frame of " + Integer.toUnsignedString(length) + " bytes (allowed " + MAX_FRAME_BYTES + ")");
+            // Most likely text where a frame should be (something printed to the protocol's stream): show its start.
+            byte[] more = in.readNBytes(40);
+            byte[] start = new byte[5 + more.length];
+            start[0] = (byte) type;
+            System.arraycopy(header, 0, start, 1, 4);
+            System.arraycopy(more, 0, start, 5, more.length);
+            String text = new String(start, java.nio.charset.StandardCharsets.ISO_8859_1).replaceAll("[^\\x20-\\x7e]", "?");
+            throw new WireError("a frame of " + Integer.toUnsignedString(length) + " bytes (allowed " + MAX_FRAME_BYTES + "), or text: \"" + text + "\"");
         }
         byte[] payload = in.readNBytes(length);
         if (payload.length < length) {

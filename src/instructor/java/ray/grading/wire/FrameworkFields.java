@@ -64,9 +64,9 @@ public final class FrameworkFields {
         }
     }
 
-    /** Writes {@code object}'s framework fields. */
-    public static void write(Object object, WireOut out, Refs refs) {
-        for (Field f : of(object.getClass())) {
+    /** Writes {@code object}'s framework fields, those of the student class {@code studentClass} it is (or extends). */
+    public static void write(Object object, Class<?> studentClass, WireOut out, Refs refs) {
+        for (Field f : of(studentClass)) {
             try {
                 Class<?> t = f.getType();
                 if (t == double.class) {
