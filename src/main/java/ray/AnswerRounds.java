@@ -66,14 +66,14 @@ public abstract class AnswerRounds {
     }
 
     /**
-     * The copy of a set of triangles that a render searches ({@code copy}, made by {@code set}'s
-     * searchCopy with {@code accelerated} telling whether it searches its tree): itself, unless the
-     * rounds search the set as a whole where its triangles' class runs (one question a ray, not one a
-     * triangle its tree visits).
+     * The copy of a surface made of parts (a set of triangles, a placement) that a render searches
+     * ({@code copy}, made by {@code original}'s searchCopy, with {@code accelerated} telling whether it
+     * searches by its tree): itself, unless the rounds search it as a whole where its parts' classes
+     * run (one question a ray, not one a part the search visits).
      */
-    public static ray.surface.Surface searched(ray.surface.TriangleSet set, boolean accelerated, ray.surface.Surface copy) {
+    public static ray.surface.Surface searched(ray.surface.Surface original, boolean accelerated, ray.surface.Surface copy) {
         AnswerRounds r = installed;
-        return r == null ? copy : r.searchedAsWhole(set, accelerated, copy);
+        return r == null ? copy : r.searchedAsWhole(original, accelerated, copy);
     }
 
     /**
@@ -127,7 +127,7 @@ public abstract class AnswerRounds {
 
     protected abstract void forgetAnswers();
 
-    protected ray.surface.Surface searchedAsWhole(ray.surface.TriangleSet set, boolean accelerated, ray.surface.Surface copy) {
+    protected ray.surface.Surface searchedAsWhole(ray.surface.Surface original, boolean accelerated, ray.surface.Surface copy) {
         return copy;
     }
 }

@@ -37,7 +37,7 @@ public final class TestProcess {
      * 11 s and 6 s. Only work of a minute or more (no test of a correct submission comes near) runs
      * slower with C1 alone, about a quarter.
      */
-    static final List<String> SHORT_LIVED_JVM = List.of("-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC");
+    static final List<String> SHORT_LIVED_JVM = List.of("-XX:+UseParallelGC");
     private static final int MAX_RESTARTS = 100;
     /**
      * Turns on ray.testing.UnfinishedTasks in the test JVM: after a task's first test that never
@@ -301,6 +301,7 @@ public final class TestProcess {
         }
         if (Boolean.getBoolean("ray1.debugTimes")) {
             command.add("-Dray1.debugTimes=true");
+            command.add("-Dray1.debugRounds=true");
         }
         if (workerSetup != null && !listOnly) {
             command.add("-D" + ray.grading.judge.Judge.WORKER_PROPERTY + "=" + workerSetup);

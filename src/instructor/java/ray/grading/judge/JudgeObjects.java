@@ -130,6 +130,8 @@ final class JudgeObjects {
                 out.u8(Protocol.REF_NULL);
             } else if (surface instanceof Transformed && certification.holdsStandIn(surface)) {
                 out.u8(Protocol.REF_PLACED).i32(placedHandle((Transformed) surface));
+            } else if (surface instanceof TriangleSet && certification.holdsStandIn(surface)) {
+                out.u8(Protocol.REF_PLACED).i32(trianglesHandle((TriangleSet) surface));
             } else {
                 out.u8(Protocol.REF_JUDGE).i32(judgeHandle(surface));
             }
@@ -159,9 +161,12 @@ final class JudgeObjects {
             return handle;
         }
 
-        /** A question's target: a stand-in's twin, or a set of stand-in triangles the worker builds again. */
+        /** A question's target: a stand-in's twin, or what the worker builds again (a set of its triangles, a placement of one). */
         int target(Object target) {
-            return target instanceof StandIn ? sync((StandIn) target) : trianglesHandle((TriangleSet) target);
+            if (target instanceof StandIn) {
+                return sync((StandIn) target);
+            }
+            return target instanceof TriangleSet ? trianglesHandle((TriangleSet) target) : placedHandle((Transformed) target);
         }
 
         /** A set of stand-in triangles, built again in the worker over their twins, in order. */

@@ -150,7 +150,7 @@ final class RoundBatch {
 
     /** One message: the rays it names, then each section, from {@code from}; {@code to} says where each section stopped. */
     private void write(JudgeObjects.Message m, int[] from, int[] to, boolean withTables) {
-        Map<RayKey, Integer> rays = new LinkedHashMap<>();
+        Rays rays = new Rays();
         Map<Surface, List<Step>> plans = new IdentityHashMap<>();
         WireOut intersects = new WireOut();
         WireOut bases = new WireOut();
@@ -158,7 +158,7 @@ final class RoundBatch {
         int k = from[0];
         for (; k < groups.size() && (k == from[0] || intersects.size() + bases.size() < MESSAGE_BYTES); k++) {
             Group g = groups.get(k);
-            int rayIndex = rayIndex(rays, RayKey.of(g.ray.ray(Double.POSITIVE_INFINITY)));
+            int rayIndex = newRay(rays, g.ray);
             intersects.varint(rayIndex).varint(g.candidates.size());
             for (Question c : g.candidates) {
                 intersects.f64(c.end);
@@ -184,7 +184,7 @@ final class RoundBatch {
         int a = from[3];
         for (; a < anyHits.size() && (a == from[3] || anys.size() < MESSAGE_BYTES); a++) {
             Question q = anyHits.get(a);
-            anys.varint(m.target(q.target)).varint(rayIndex(rays, RayKey.of(q.ray(Double.POSITIVE_INFINITY)))).f64(q.end);
+            anys.varint(m.target(q.target)).varint(newRay(rays, q)).f64(q.end);
         }
         to[3] = a;
         if (withTables) {
@@ -203,19 +203,33 @@ final class RoundBatch {
             q.answer.write(exact, m);
         }
         WireOut body = m.body;
-        body.i32(rays.size());
-        for (RayKey key : rays.keySet()) {
-            Records.writeKey(body, key.ray(Double.POSITIVE_INFINITY));
-        }
+        body.i32(rays.count);
+        body.raw(rays.keys);
         body.i32(to[0] - from[0]).raw(intersects).raw(cameras).raw(textures).varint(to[3] - from[3]).raw(anys)
                 .i32(baseGroups[0]).raw(bases).raw(exact);
     }
 
-    private static int rayIndex(Map<RayKey, Integer> rays, RayKey key) {
-        Integer known = rays.get(key);
+    /**
+     * A message's rays: each question's ray written once as it comes (a computation's questions rarely
+     * share one with another's), and those of the judge's tables, which their groups share, once each.
+     */
+    private static final class Rays {
+        final WireOut keys = new WireOut();
+        int count;
+        final Map<RayKey, Integer> shared = new java.util.HashMap<>();
+    }
+
+    private static int newRay(Rays rays, Question q) {
+        rays.keys.f64(q.origin.x).f64(q.origin.y).f64(q.origin.z).f64(q.direction.x).f64(q.direction.y).f64(q.direction.z).f64(q.start);
+        return rays.count++;
+    }
+
+    private static int rayIndex(Rays rays, RayKey key) {
+        Integer known = rays.shared.get(key);
         if (known == null) {
-            known = rays.size();
-            rays.put(key, known);
+            known = rays.count++;
+            Records.writeKey(rays.keys, key.ray(Double.POSITIVE_INFINITY));
+            rays.shared.put(key, known);
         }
         return known;
     }
@@ -236,7 +250,7 @@ final class RoundBatch {
      * endless segment, as one group of the base table: a student's group passes its children the ray
      * it was given, and a placement passes it in its own coordinates (a group of its own).
      */
-    private void prefetch(List<Step> plan, Ray ray, int rayIndex, Map<RayKey, Integer> rays, WireOut bases, int[] groups,
+    private void prefetch(List<Step> plan, Ray ray, int rayIndex, Rays rays, WireOut bases, int[] groups,
             JudgeObjects.Message m) {
         int countAt = -1;
         int count = 0;
@@ -342,25 +356,35 @@ final class RoundBatch {
         }
         List<Double> ends = new ArrayList<>(asked + extra);
         g.candidates.forEach(c -> ends.add(c.end));
+        int[][] from = new int[extra][];
         for (int e = 0; e < extra; e++) {
             ends.add(in.f64());
+            from[e] = new int[] {in.varint(), in.varint()};
+            if (from[e][0] >= g.targets.size() || from[e][1] >= asked + e) {
+                throw new WireError("an added candidate that follows no earlier hit");
+            }
         }
         Answer[][] answers = new Answer[g.targets.size()][];
         for (int t = 0; t < answers.length; t++) {
             answers[t] = readTarget(in, objects, g.ray.start, ends);
+            // The targets up to the one whose hit a candidate follows were not run on it.
+            for (int e = 0; e < extra; e++) {
+                if (t <= from[e][0]) {
+                    answers[t][asked + e] = null;
+                }
+            }
         }
-        // Each added candidate's record is what a hit left: the record before the candidate it follows, changed by that hit.
+        // Each added candidate's record is what the hit it follows left: the record before that candidate, changed by the hit.
         List<IntersectionRecord> befores = new ArrayList<>(asked + extra);
         g.candidates.forEach(c -> befores.add(c.before));
         for (int e = 0; e < extra; e++) {
-            int t = in.varint();
-            int c = in.varint();
-            if (t >= answers.length || c >= befores.size() || answers[t][c] == null || !answers[t][c].hit) {
+            Answer hit = answers[from[e][0]][from[e][1]];
+            if (hit == null || hit.status != Protocol.RETURNED || !hit.hit) {
                 throw new WireError("an added candidate that follows no hit");
             }
             IntersectionRecord before = new IntersectionRecord();
-            before.set(befores.get(c));
-            Records.apply(answers[t][c].mask, answers[t][c].written, before);
+            before.set(befores.get(from[e][1]));
+            Records.apply(hit.mask, hit.written, before);
             befores.add(before);
         }
         // The asked questions by target and candidate; every other answer goes to the pool.

@@ -79,8 +79,8 @@ final class Rounds extends AnswerRounds {
             // A ray without an origin or direction: asked at once (a whole set, triangle by triangle).
             return self instanceof StandIn ? StudentCalls.intersectNow((Surface) self, out, ray) : ((WholeSearch) self).copy.intersect(out, ray);
         }
-        // A set searched as a whole is asked as the set: every thread's copy of it asks the same question.
-        Object target = self instanceof WholeSearch ? ((WholeSearch) self).set : self;
+        // A surface searched as a whole is asked as the original: every thread's copy of it asks the same question.
+        Object target = self instanceof WholeSearch ? ((WholeSearch) self).original : self;
         Computation c = current();
         Question q = c.intersect(target, ray, out);
         if (q.answer == null) {
@@ -100,7 +100,7 @@ final class Rounds extends AnswerRounds {
             return self.copy.intersectsAny(ray);
         }
         Computation c = current();
-        Question q = c.anyHit(self.set, ray);
+        Question q = c.anyHit(self.original, ray);
         if (q.answer == null) {
             c.unknown(q);
             return false;
@@ -143,20 +143,32 @@ final class Rounds extends AnswerRounds {
     }
 
     /**
-     * A set of triangles that are all stand-ins, searched by its tree (the framework's default) while
-     * answers come in rounds: searched as a whole where the student's Triangle runs.
+     * A set of triangles that are all of the class graded now, searched by its tree (the framework's
+     * default), and a placement of such a set, while answers come in rounds: searched as a whole where
+     * the student's Triangle runs, the placement's world ray asked as the other surfaces' are.
      */
     @Override
-    protected Surface searchedAsWhole(TriangleSet set, boolean accelerated, Surface copy) {
-        if (!accelerated || set.triangleCount() == 0) {
+    protected Surface searchedAsWhole(Surface original, boolean accelerated, Surface copy) {
+        if (!accelerated) {
             return copy;
         }
-        for (Triangle t : set.triangles()) {
-            if (!StudentCalls.isRemote(t)) {
+        if (original instanceof TriangleSet) {
+            TriangleSet set = (TriangleSet) original;
+            if (set.triangleCount() == 0) {
                 return copy;
             }
+            for (Triangle t : set.triangles()) {
+                if (!StudentCalls.isRemote(t)) {
+                    return copy;
+                }
+            }
+            return new WholeSearch(original, copy);
         }
-        return new WholeSearch(set, copy);
+        if (original instanceof ray.surface.Transformed && copy instanceof ray.surface.Transformed
+                && ((ray.surface.Transformed) copy).placed() instanceof WholeSearch) {
+            return new WholeSearch(original, copy);
+        }
+        return copy;
     }
 
     @Override
@@ -192,13 +204,16 @@ final class Rounds extends AnswerRounds {
         return true;
     }
 
-    /** A set of stand-in triangles in a render's search: searched as a whole in the worker while answers come in rounds. */
+    /**
+     * A set of triangles of the class graded now, or a placement of one, in a render's search: searched
+     * as a whole in the worker while answers come in rounds, and by its copy otherwise.
+     */
     static final class WholeSearch extends Surface {
-        final TriangleSet set;
+        final Surface original;
         final Surface copy;
 
-        WholeSearch(TriangleSet set, Surface copy) {
-            this.set = set;
+        WholeSearch(Surface original, Surface copy) {
+            this.original = original;
             this.copy = copy;
             setShader(copy.getShader());
         }

@@ -1,5 +1,8 @@
 package ray.grading.wire;
 
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import ray.math.Vec3;
 
@@ -9,6 +12,9 @@ import ray.math.Vec3;
  * student's side with this and believes nothing it cannot parse exactly.
  */
 public final class WireIn {
+    private static final VarHandle LONG = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.BIG_ENDIAN);
+    private static final VarHandle INT = MethodHandles.byteArrayViewVarHandle(int[].class, ByteOrder.BIG_ENDIAN);
+
     private final byte[] bytes;
     private final int end;
     private int at;
@@ -43,7 +49,7 @@ public final class WireIn {
 
     public int i32() {
         need(4);
-        int v = (bytes[at] & 0xff) << 24 | (bytes[at + 1] & 0xff) << 16 | (bytes[at + 2] & 0xff) << 8 | bytes[at + 3] & 0xff;
+        int v = (int) INT.get(bytes, at);
         at += 4;
         return v;
     }
@@ -66,10 +72,7 @@ public final class WireIn {
 
     public long i64() {
         need(8);
-        long v = 0;
-        for (int k = 0; k < 8; k++) {
-            v = v << 8 | (bytes[at + k] & 0xff);
-        }
+        long v = (long) LONG.get(bytes, at);
         at += 8;
         return v;
     }

@@ -2,6 +2,9 @@ package ray.grading.wire;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import ray.math.Vec3;
@@ -12,6 +15,9 @@ import ray.math.Vec3;
  * one frame ({@link Frames}).
  */
 public final class WireOut {
+    private static final VarHandle LONG = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.BIG_ENDIAN);
+    private static final VarHandle INT = MethodHandles.byteArrayViewVarHandle(int[].class, ByteOrder.BIG_ENDIAN);
+
     private byte[] bytes = new byte[512];
     private int size;
 
@@ -47,10 +53,8 @@ public final class WireOut {
 
     public WireOut i32(int value) {
         room(4);
-        bytes[size++] = (byte) (value >>> 24);
-        bytes[size++] = (byte) (value >>> 16);
-        bytes[size++] = (byte) (value >>> 8);
-        bytes[size++] = (byte) value;
+        INT.set(bytes, size, value);
+        size += 4;
         return this;
     }
 
@@ -68,9 +72,8 @@ public final class WireOut {
 
     public WireOut i64(long value) {
         room(8);
-        for (int shift = 56; shift >= 0; shift -= 8) {
-            bytes[size++] = (byte) (value >>> shift);
-        }
+        LONG.set(bytes, size, value);
+        size += 8;
         return this;
     }
 

@@ -5,7 +5,6 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
@@ -41,7 +40,8 @@ final class BatchCalls {
     /** One batch being answered: its rays, the judge's tables, and what evaluations needed beyond them. */
     final class Running {
         private final List<Ray> rays;
-        private final Map<Key, Integer> rayIndex = new HashMap<>();
+        /** The batch's rays by value, made when first needed (a ray the student's code made anew). */
+        private Map<Key, Integer> rayIndex;
         /** Per ray index, the judge's base answers: handles sorted, answers alike. */
         private final int[][] baseHandles;
         private final Answer[][] baseAnswers;
@@ -57,9 +57,6 @@ final class BatchCalls {
             this.rays = rays;
             this.baseHandles = new int[rays.size()][];
             this.baseAnswers = new Answer[rays.size()][];
-            for (int k = 0; k < rays.size(); k++) {
-                rayIndex.putIfAbsent(new Key(-1, rays.get(k), Double.NaN, null), k);
-            }
         }
 
         /** The batch's index of a ray with this origin, direction and start, or −1. */
@@ -69,6 +66,12 @@ final class BatchCalls {
                 // The student's group passes its children copies of the ray it was given: the same vectors.
                 if (ray.origin == c.origin && ray.direction == c.direction && RecordValues.same(ray.start, c.start)) {
                     return current;
+                }
+            }
+            if (rayIndex == null) {
+                rayIndex = new HashMap<>();
+                for (int k = 0; k < rays.size(); k++) {
+                    rayIndex.putIfAbsent(new Key(-1, rays.get(k), Double.NaN, null), k);
                 }
             }
             return rayIndex.getOrDefault(new Key(-1, ray, Double.NaN, null), -1);
@@ -272,6 +275,9 @@ final class BatchCalls {
         return calls;
     }
 
+    /** A target not run on an added candidate: it comes before the hit the candidate follows, and the search never asks it so. */
+    private static final Answer SKIPPED = Answer.threw(new ThrownData("skipped", null, List.of(), null));
+
     /** A segment end and the record before, as a search asks; an added one says which hit it follows. */
     private static final class Candidate {
         final double end;
@@ -308,38 +314,42 @@ final class BatchCalls {
 
         void evaluate(Running running, WireOut out) {
             running.current = index;
-            // answers.get(t).get(c): target t on candidate c; null when it needed what the judge did not send.
+            // answers.get(t).get(c): target t on candidate c; null when it needed what the judge did not send,
+            // SKIPPED for a candidate added after a hit of target t or of a target after it.
             List<List<Answer>> answers = new ArrayList<>(targets.size());
             for (int t = 0; t < targets.size(); t++) {
                 answers.add(new ArrayList<>(candidates.size()));
             }
+            boolean search = targets.size() > 1 && targets.size() <= Batches.MAX_SEARCHED;
             for (int c = 0; c < candidates.size(); c++) {
                 Candidate candidate = candidates.get(c);
                 for (int t = 0; t < targets.size(); t++) {
+                    if (c >= asked && t <= candidate.fromTarget) {
+                        answers.get(t).add(SKIPPED);
+                        continue;
+                    }
                     Answer a = run(running, targets.get(t), candidate);
                     answers.get(t).add(a);
-                    // A hit is what a search asks its other surfaces with next (a group's loop, a mesh's tree: a few
-                    // dozen surfaces a ray); a lone target is never asked again, and a loop over hundreds is no search.
-                    if (targets.size() > 1 && targets.size() <= Batches.MAX_SEARCHED && a != null && a.status == Protocol.RETURNED && a.hit && (a.mask & Records.T) != 0) {
+                    // A search (a group's loop over its surfaces, a few dozen a ray) asks the surfaces after a hit
+                    // with the segment ending at it, and the record it left; a lone target is never asked again,
+                    // and a loop over hundreds is no search.
+                    if (search && t + 1 < targets.size() && a != null && a.status == Protocol.RETURNED && a.hit && (a.mask & Records.T) != 0) {
                         IntersectionRecord after = new IntersectionRecord();
                         after.set(candidate.before);
                         Records.apply(a.mask, a.written, after);
                         addCandidate(a.written.t, after, t, c);
-                        addCandidate(Math.nextUp(a.written.t), after, t, c);
                     }
                 }
             }
             running.current = -1;
-            // The added candidates: their ends, and, after the answers, which hit each follows (its record is that hit's).
+            // The added candidates, each with the target and candidate whose hit it follows (its record is the record
+            // that hit left; the targets up to that one are not run on it); then each target's answers.
             out.varint(candidates.size() - asked);
             for (Candidate c : candidates.subList(asked, candidates.size())) {
-                out.f64(c.end);
+                out.f64(c.end).varint(c.fromTarget).varint(c.fromCandidate);
             }
             for (int t = 0; t < targets.size(); t++) {
                 writeTarget(answers.get(t), out);
-            }
-            for (Candidate c : candidates.subList(asked, candidates.size())) {
-                out.varint(c.fromTarget).varint(c.fromCandidate);
             }
         }
 
@@ -365,7 +375,7 @@ final class BatchCalls {
         private void writeTarget(List<Answer> answers, WireOut out) {
             boolean allMissed = true;
             for (Answer a : answers) {
-                allMissed &= a != null && Answer.follows(a, Answer.MISS);
+                allMissed &= a == SKIPPED || a != null && Answer.follows(a, Answer.MISS);
             }
             if (allMissed) {
                 out.u8(Batches.ALL_MISSED);
@@ -375,7 +385,7 @@ final class BatchCalls {
             int base = -1;
             for (int c = 0; c < answers.size(); c++) {
                 Answer a = answers.get(c);
-                if (a != null && a.isBase() && (base < 0 || candidates.get(c).end > candidates.get(base).end)) {
+                if (a != null && a != SKIPPED && a.isBase() && (base < 0 || candidates.get(c).end > candidates.get(base).end)) {
                     base = c;
                 }
             }
@@ -387,7 +397,7 @@ final class BatchCalls {
             List<Integer> explicit = new ArrayList<>();
             for (int c = 0; c < answers.size(); c++) {
                 Answer a = answers.get(c);
-                if (a == null || baseAnswer == null || !Answer.follows(a, baseAnswer.predict(key.start, candidates.get(c).end))) {
+                if (a != SKIPPED && (a == null || baseAnswer == null || !Answer.follows(a, baseAnswer.predict(key.start, candidates.get(c).end)))) {
                     explicit.add(c);
                 }
             }
@@ -493,8 +503,13 @@ final class BatchCalls {
             this.ray = ray;
             this.end = end;
             this.before = before;
-            this.hash = Objects.hash(handle, bits(ray.origin), bits(ray.direction), Double.doubleToRawLongBits(ray.start),
-                    Double.doubleToRawLongBits(end), before == null ? 0 : RecordValues.hash(before));
+            long h = handle;
+            h = h * 31 + bits(ray.origin);
+            h = h * 31 + bits(ray.direction);
+            h = h * 31 + Double.doubleToRawLongBits(ray.start);
+            h = h * 31 + Double.doubleToRawLongBits(end);
+            h = h * 31 + (before == null ? 0 : RecordValues.hash(before));
+            this.hash = Long.hashCode(h * 0x9E3779B97F4A7C15L);
         }
 
         @Override
