@@ -53,8 +53,30 @@ public abstract class AnswerRounds {
 
     /** Asks every question guessed since the last call, together; false when none was. */
     public static boolean fetch() {
+        Object asked = ask();
+        if (asked == null) {
+            return false;
+        }
+        await(asked);
+        return true;
+    }
+
+    /**
+     * Asks every question guessed since the last call, without waiting for the answers, so that this
+     * process can go on with other computations meanwhile; null when none was guessed. The answers are
+     * in once {@link #await} returns.
+     */
+    public static Object ask() {
         AnswerRounds r = installed;
-        return r != null && r.fetchGuessed();
+        return r == null ? null : r.askGuessed();
+    }
+
+    /** Waits until the answers to what {@link #ask} asked are in (and those to everything asked before it). */
+    public static void await(Object asked) {
+        AnswerRounds r = installed;
+        if (r != null && asked != null) {
+            r.awaitAnswers(asked);
+        }
     }
 
     /** Forgets what the computations asked and learned: the objects asked about may change from here on. */
@@ -123,7 +145,9 @@ public abstract class AnswerRounds {
 
     protected abstract Object endComputation();
 
-    protected abstract boolean fetchGuessed();
+    protected abstract Object askGuessed();
+
+    protected abstract void awaitAnswers(Object asked);
 
     protected abstract void forgetAnswers();
 

@@ -107,6 +107,11 @@ public final class CompiledTree {
      * sources, scenes and classes: tens of milliseconds.
      */
     static String fingerprint(Path tree) throws IOException {
+        return fingerprint(tree, tree);
+    }
+
+    /** SHA-256 of every file under {@code part} (a folder of {@code tree}), named from {@code tree}. */
+    static String fingerprint(Path tree, Path part) throws IOException {
         MessageDigest digest;
         try {
             digest = MessageDigest.getInstance("SHA-256");
@@ -114,7 +119,7 @@ public final class CompiledTree {
             throw new IllegalStateException(e);
         }
         List<Path> files;
-        try (Stream<Path> walk = Files.walk(tree)) {
+        try (Stream<Path> walk = Files.walk(part)) {
             files = walk.filter(p -> !p.equals(tree)).sorted().collect(Collectors.toList());
         }
         byte[] buffer = new byte[1 << 16];

@@ -412,11 +412,14 @@ public final class Grader implements Callable<Integer> {
         }
         if (!Files.exists(tree.resolve("classes"))) {
             ProjectTree.copy(project, tree, Map.of());
-            CompileResult compiled = compile(tree);
-            if (!compiled.ok()) {
-                throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
+            // The autograder's package brings the tree compiled; a project of one's own is compiled here.
+            if (!PrecompiledTree.useFor(project, tree)) {
+                CompileResult compiled = compile(tree);
+                if (!compiled.ok()) {
+                    throw new IllegalStateException("the instructor's tree does not compile:\n" + compiled.messages());
+                }
+                GradingClasses.prepare(tree, classpath);
             }
-            GradingClasses.prepare(tree, classpath);
         }
         return tree;
     }

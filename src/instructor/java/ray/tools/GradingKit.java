@@ -11,6 +11,7 @@ import java.util.jar.JarEntry;
 import java.util.jar.JarOutputStream;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
+import ray.grading.PrecompiledTree;
 import ray.grading.ProjectTree;
 
 /**
@@ -37,13 +38,27 @@ public final class GradingKit {
      * @param libraries jars the grader and the tests need (JUnit, ...), copied into lib/
      */
     public static void write(Sink sink, String prefix, Path project, List<Path> classes, List<Path> libraries) throws IOException {
-        for (String part : ProjectTree.PARTS) {
-            // A folder (src, scenes) or a single file (settings.gradle).
-            if (Files.exists(project.resolve(part))) {
-                for (Path file : TrackedFiles.under(project, part)) {
-                    sink.put(prefix + "ray1/" + slashed(project.relativize(file)), Files.readAllBytes(file), false);
+        // The tree as it ships, and (compiled from exactly that) its classes as the grader would compile them.
+        Path tree = Files.createTempDirectory("ray1-kit-");
+        try {
+            for (String part : ProjectTree.PARTS) {
+                // A folder (src, scenes) or a single file (settings.gradle).
+                if (Files.exists(project.resolve(part))) {
+                    for (Path file : TrackedFiles.under(project, part)) {
+                        String name = slashed(project.relativize(file));
+                        sink.put(prefix + "ray1/" + name, Files.readAllBytes(file), false);
+                        Files.createDirectories(tree.resolve(name).getParent());
+                        Files.copy(file, tree.resolve(name));
+                    }
                 }
             }
+            PrecompiledTree.compile(tree, libraries.stream().map(Path::toString).collect(Collectors.joining(java.io.File.pathSeparator)));
+            Path compiled = tree.resolve(PrecompiledTree.FOLDER);
+            for (Path file : filesUnder(compiled)) {
+                sink.put(prefix + "ray1/" + PrecompiledTree.FOLDER + "/" + slashed(compiled.relativize(file)), Files.readAllBytes(file), false);
+            }
+        } finally {
+            ProjectTree.deleteRecursively(tree);
         }
         sink.put(prefix + "lib/ray1-grader.jar", jarOf(classes), false);
         for (Path library : libraries) {

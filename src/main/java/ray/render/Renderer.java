@@ -133,7 +133,8 @@ public final class Renderer {
      * The render when answers may come late ({@link AnswerRounds}: while grading): each pixel is a
      * computation, rendered again in the next round until it used no guessed answer. Each worker keeps
      * its rows and its shading (the same copies of the scene's surfaces) from round to round, so that a
-     * pixel asks the same questions of the same objects each time.
+     * pixel asks the same questions of the same objects each time. The rows are in two halves, whose
+     * rounds alternate: while the answers to one half's questions are being made, the other half renders.
      */
     private void renderInRounds(List<CountingShading> shadings, Image image, PixelKinds kinds) {
         int workerCount = shadings.size();
@@ -142,27 +143,38 @@ public final class Renderer {
         java.util.Arrays.fill(pending, true);
         // Each pending pixel's state: what it asked and was told in the rounds so far.
         Object[] states = new Object[pending.length];
+        Object[] asked = new Object[2];
+        boolean[] done = new boolean[2];
         try {
-            for (int round = 1; ; round++) {
-                AtomicInteger left = new AtomicInteger();
-                long t0 = System.nanoTime();
-                runWorkers(workerCount, k -> {
-                    int[] votes = kinds != null ? new int[SurfaceKind.count()] : null;
-                    for (int j = k; j < height; j += workerCount) {
-                        left.addAndGet(renderRow(shadings.get(k), image, j, kinds, votes, pending, states));
+            for (int round = 1; !done[0] || !done[1]; round++) {
+                for (int half = 0; half < 2; half++) {
+                    if (done[half]) {
+                        continue;
                     }
-                }, () -> { });
-                if (Boolean.getBoolean("ray1.debugRounds")) {
-                    System.err.printf("pass %d: %.3f s, %d pending%n", round, (System.nanoTime() - t0) / 1e9, left.get());
-                }
-                if (left.get() == 0) {
-                    rowsDone.set(height);
-                    return;
-                }
-                if (!AnswerRounds.fetch() || round >= AnswerRounds.MAX_ROUNDS) {
-                    throw new IllegalStateException("the render's answers never settled after " + round + " rounds");
+                    AnswerRounds.await(asked[half]);
+                    int rowsOf = half;
+                    AtomicInteger left = new AtomicInteger();
+                    runWorkers(workerCount, k -> {
+                        int[] votes = kinds != null ? new int[SurfaceKind.count()] : null;
+                        // Worker k renders rows k, k + n, k + 2n, ...: those of this half.
+                        for (int j = k; j < height; j += workerCount) {
+                            if ((j / workerCount) % 2 == rowsOf) {
+                                left.addAndGet(renderRow(shadings.get(k), image, j, kinds, votes, pending, states));
+                            }
+                        }
+                    }, () -> { });
+                    if (left.get() == 0) {
+                        done[half] = true;
+                        asked[half] = null;
+                        continue;
+                    }
+                    asked[half] = AnswerRounds.ask();
+                    if (asked[half] == null || round >= AnswerRounds.MAX_ROUNDS) {
+                        throw new IllegalStateException("the render's answers never settled after " + round + " rounds");
+                    }
                 }
             }
+            rowsDone.set(height);
         } finally {
             AnswerRounds.forget();
         }

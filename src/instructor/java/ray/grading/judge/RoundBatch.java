@@ -132,19 +132,38 @@ final class RoundBatch {
                 + textureCalls.size() + " texture, " + neededBases.size() + " bases, " + exactTable.size() + " exact";
     }
 
-    void send(Worker worker) {
+    /** The messages of this batch, each with where its sections start and stop (for reading its answer). */
+    private final List<int[][]> sent = new ArrayList<>();
+
+    /** Writes the batch as messages of at most about {@link #MESSAGE_BYTES} and sends them, not waiting for the answers. */
+    void ask(Worker worker) {
+        JudgeObjects objects = worker.objects();
+        List<WireOut> messages = new ArrayList<>();
         int[] at = new int[4];
         boolean first = true;
         while (first || at[0] < groups.size() || at[1] < cameraCalls.size() || at[2] < textureCalls.size() || at[3] < anyHits.size()) {
-            boolean withTables = first;
             int[] from = at.clone();
             int[] to = new int[4];
-            worker.batch(m -> write(m, from, to, withTables), in -> {
-                read(in, worker.objects(), from, to);
-                return null;
-            });
+            JudgeObjects.Message m = objects.new Message();
+            write(m, from, to, first);
+            messages.add(m.assembled());
+            sent.add(new int[][] {from, to});
             at = to;
             first = false;
+        }
+        sentTo = worker.sendBatches(messages);
+    }
+
+    /** The worker the messages went to. */
+    private Object sentTo;
+
+    /** Reads the answers to the messages {@link #ask} sent, in order, into the questions. */
+    void await(Worker worker) {
+        for (int[][] message : sent) {
+            worker.nextBatchAnswer(sentTo, in -> {
+                read(in, worker.objects(), message[0], message[1]);
+                return null;
+            });
         }
     }
 

@@ -177,10 +177,21 @@ final class Rounds extends AnswerRounds {
         asking.clear();
         neededBases.clear();
         neededExact.clear();
+        // Answers still on their way (a render that threw) are read and dropped: the next batch's must come next.
+        try {
+            while (!unanswered.isEmpty()) {
+                unanswered.poll().await(Worker.get());
+            }
+        } catch (WorkerFailure e) {
+            unanswered.clear();
+        }
     }
 
+    /** Batches asked and not yet awaited, oldest first. */
+    private final Queue<RoundBatch> unanswered = new java.util.ArrayDeque<>();
+
     @Override
-    protected boolean fetchGuessed() {
+    protected Object askGuessed() {
         // Exact judge-side questions first: answering one may ask the worker more (a judge-side surface
         // holding a student's object), which then goes in this round's batch.
         List<ExactQuestion> exactTable = new ArrayList<>();
@@ -194,14 +205,25 @@ final class Rounds extends AnswerRounds {
         asking.clear();
         RoundBatch batch = new RoundBatch(this, computations, exactTable);
         if (batch.isEmpty()) {
-            return false;
+            return null;
         }
-        long t0 = System.nanoTime();
-        batch.send(Worker.get());
+        batch.ask(Worker.get());
+        unanswered.add(batch);
         if (Boolean.getBoolean("ray1.debugRounds")) {
-            System.err.printf("round: %s: %.3f s%n", batch, (System.nanoTime() - t0) / 1e9);
+            System.err.printf("asked: %s%n", batch);
         }
-        return true;
+        return batch;
+    }
+
+    @Override
+    protected void awaitAnswers(Object asked) {
+        while (!unanswered.isEmpty()) {
+            RoundBatch batch = unanswered.poll();
+            batch.await(Worker.get());
+            if (batch == asked) {
+                return;
+            }
+        }
     }
 
     /**

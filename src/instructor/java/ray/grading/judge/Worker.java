@@ -2,6 +2,7 @@ package ray.grading.judge;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.Function;
@@ -142,23 +143,34 @@ final class Worker {
     }
 
     /**
-     * One batch ({@link Rounds}): {@code write} writes it, {@code read} reads the answer whole. A batch
-     * runs no callback: judge-side answers come in its tables.
+     * Sends batches ({@link RoundBatch}) without waiting: a thread of their own writes them, so that the
+     * judge renders other pixels while the worker answers. Their answers come in order ({@link #nextBatchAnswer}).
      */
-    synchronized <T> T batch(Consumer<JudgeObjects.Message> write, Function<WireIn, T> read) {
+    synchronized Object sendBatches(List<WireOut> messages) {
         ensureStarted();
+        WorkerProcess target = process;
+        for (WireOut message : messages) {
+            writer.execute(() -> {
+                try {
+                    target.send(Protocol.BATCH, message);
+                } catch (WorkerFailure e) {
+                    // The worker is gone: the wait for its answer says so.
+                }
+            });
+        }
+        return target;
+    }
+
+    /**
+     * The answer to the oldest batch sent (to {@code sentTo}, what {@link #sendBatches} returned) and not yet
+     * answered, read whole by the caller; a failure ends the worker.
+     */
+    synchronized <T> T nextBatchAnswer(Object sentTo, Function<WireIn, T> read) {
+        if (process == null || process != sentTo) {
+            throw new WorkerFailure(WorkerFailure.Kind.ENDED, "the JVM running your code ended before it answered");
+        }
         try {
-            long t0 = System.nanoTime();
-            JudgeObjects.Message message = objects.new Message();
-            write.accept(message);
-            WireOut whole = message.assembled();
-            long t1 = System.nanoTime();
-            process.send(Protocol.BATCH, whole);
             Frames.Frame frame = process.next(callDeadline());
-            long t2 = System.nanoTime();
-            if (Boolean.getBoolean("ray1.debugRounds")) {
-                System.err.printf("  batch: write %.3f s (%d bytes), worker %.3f s (%d bytes back)%n", (t1 - t0) / 1e9, whole.size(), (t2 - t1) / 1e9, frame.payload.length);
-            }
             if (frame.type != Protocol.BATCH_ANSWER) {
                 throw new WorkerFailure("the worker sent a message of type " + frame.type + " for a batch");
             }
@@ -178,6 +190,13 @@ final class Worker {
             throw new WorkerFailure(WorkerFailure.Kind.TIMED_OUT, "interrupted while your code ran (the test's time limit)");
         }
     }
+
+    /** Writes batches to the worker, one after another, while the judge goes on. */
+    private final java.util.concurrent.ExecutorService writer = java.util.concurrent.Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "ray1-batch-writer");
+        t.setDaemon(true);
+        return t;
+    });
 
     /** The worker's message of {@code type}, serving its callbacks until it comes. */
     private WireIn await(int type) throws InterruptedException {
