@@ -141,7 +141,7 @@ final class Sandbox implements AutoCloseable {
         // The JVM's own messages go to standard error (its warnings default to standard output), since standard
         // output carries only the protocol; and no performance-data file, which workers in PID namespaces of
         // their own (each one's JVM is the same pid) would contend for.
-        command.addAll(List.of(HEAP, "-XX:+DisplayVMOutputToStderr", "-Xlog:disable", "-Xlog:all=warning:stderr", "-XX:-UsePerfData",
+        command.addAll(List.of(HEAP, "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", "-XX:+DisplayVMOutputToStderr", "-Xlog:disable", "-Xlog:all=warning:stderr", "-XX:-UsePerfData",
                 "-Xshare:auto", "-Djava.awt.headless=true",
                 "-Duser.home=" + folder.resolve("home"), "-Djava.io.tmpdir=" + folder.resolve("tmp"),
                 "-cp", copy + File.pathSeparator + folder.resolve("handout"), WorkerMain.class.getName()));
