@@ -233,6 +233,8 @@ public final class Grader implements Callable<Integer> {
         Path workers = work.resolve("workers");
         Files.createDirectories(workers);
         Set<Integer> judged = new TreeSet<>();
+        Map<Integer, Map<String, Path>> filesOf = new java.util.TreeMap<>();
+        Map<Integer, StudentCompiler.Unit> units = new java.util.TreeMap<>();
         for (int task : new TreeSet<>(studentFiles.values())) {
             if (onlyTask != null && task != onlyTask) {
                 continue;
@@ -243,11 +245,18 @@ public final class Grader implements Callable<Integer> {
                     taskFiles.put(path, file);
                 }
             });
-            String refused = compileTask(task, taskFiles, instructor, output);
+            filesOf.put(task, taskFiles);
+            units.put(task, unitOf(task, taskFiles, instructor));
+        }
+        // Each task's files compile on their own (in a JVM of their own, within a time limit).
+        Map<StudentCompiler.Unit, CompileResult> compiled = StudentCompiler.compile(new ArrayList<>(units.values()), deadline);
+        for (Map.Entry<Integer, StudentCompiler.Unit> unit : units.entrySet()) {
+            int task = unit.getKey();
+            String refused = refusal(task, filesOf.get(task), unit.getValue(), compiled.get(unit.getValue()), output);
             if (refused != null) {
                 byTask.put(task, allFailed(task, refused));
             } else {
-                sandbox.containment(work.resolve("task-" + task).resolve("classes"), "task-" + task).write(workers.resolve("task-" + task));
+                sandbox.containment(unit.getValue().classes, "task-" + task).write(workers.resolve("task-" + task));
                 judged.add(task);
             }
         }
@@ -291,11 +300,8 @@ public final class Grader implements Callable<Integer> {
         }
     }
 
-    /**
-     * Compiles one task's files against the handout into task-N/classes; why its tests cannot run (they
-     * do not compile, or define classes they may not), or null.
-     */
-    private String compileTask(int task, Map<String, Path> taskFiles, Path instructor, StringBuilder output) throws IOException {
+    /** One task's compilation: its files copied to task-N, compiled against the handout into task-N/classes. */
+    private StudentCompiler.Unit unitOf(int task, Map<String, Path> taskFiles, Path instructor) throws IOException {
         Path taskDir = work.resolve("task-" + task);
         List<Path> sources = new ArrayList<>();
         for (Map.Entry<String, Path> file : taskFiles.entrySet()) {
@@ -304,17 +310,21 @@ public final class Grader implements Callable<Integer> {
             Files.copy(file.getValue(), copy, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             sources.add(copy);
         }
-        Path classes = taskDir.resolve("classes");
-        CompileResult taskCompiled = ProjectCompiler.compile(taskDir, sources, classes, GradingClasses.handout(instructor).toString());
+        return new StudentCompiler.Unit(taskDir, sources, taskDir.resolve("classes"), GradingClasses.handout(instructor).toString());
+    }
+
+    /** Why a task's tests cannot run (its files do not compile, or define classes they may not), or null. */
+    private static String refusal(int task, Map<String, Path> taskFiles, StudentCompiler.Unit unit, CompileResult compiled,
+            StringBuilder output) throws IOException {
         String files = String.join(", ", taskFiles.keySet());
         String why = null;
-        if (!taskCompiled.ok()) {
+        if (!compiled.ok()) {
             // Only this task's tests fail: each other task is graded with its own files, which may compile.
             why = "Task " + task + "'s files (" + files + ") do not compile with the rest of the handout, so its"
                     + " tests could not run; the other tasks are graded on their own. (If they compile in your project,"
-                    + " do they use something you changed in another task's file?)\n" + taskCompiled.messages();
+                    + " do they use something you changed in another task's file?)\n" + compiled.messages();
         } else {
-            String refused = StudentClasses.refused(classes, taskFiles.keySet());
+            String refused = StudentClasses.refused(unit.classes, taskFiles.keySet());
             if (refused != null) {
                 why = "Task " + task + "'s files (" + files + ") were not graded: " + refused;
             }
