@@ -335,27 +335,9 @@ public final class Grader implements Callable<Integer> {
         return why;
     }
 
-    /**
-     * The task's outcomes as the instructor's list has them: each listed test once, worth what the
-     * list says, passed only when the judge reported it passed; a test the judge did not report, or
-     * reported twice, fails; anything reported that is not listed counts for nothing.
-     */
+    /** The task's outcomes as the instructor's list has them ({@link ListedOutcomes}). */
     private List<TestOutcome> judged(int task, List<TestOutcome> ran) throws IOException, InterruptedException {
-        Map<String, List<TestOutcome>> byId = new LinkedHashMap<>();
-        for (TestOutcome t : ran) {
-            byId.computeIfAbsent(t.id(), k -> new ArrayList<>()).add(t);
-        }
-        List<TestOutcome> judged = new ArrayList<>();
-        for (TestOutcome expected : listedTests(task)) {
-            List<TestOutcome> reports = byId.getOrDefault(expected.id(), List.of());
-            if (reports.size() == 1) {
-                judged.add(expected.withResultOf(reports.get(0)));
-            } else {
-                judged.add(expected.failedWith(reports.isEmpty() ? "this test reported no result" : "this test reported "
-                        + reports.size() + " results"));
-            }
-        }
-        return judged;
+        return ListedOutcomes.judged(listedTests(task), ran);
     }
 
     /**

@@ -41,16 +41,21 @@ final class Sandbox implements AutoCloseable {
     /** The worker's heap: unbounded allocation in student code fails its call, not the grader. */
     static final String HEAP = "-Xmx1g";
 
+    /** The most users one machine's gradings at once may claim. */
+    private static final int MAX_USERS = 64;
+
     private final Path folder;
     private final Optional<int[]> user;
     private final String userName;
     private final String warning;
+    private final UserClaim claim;
 
-    private Sandbox(Path folder, Optional<int[]> user, String userName, String warning) {
+    private Sandbox(Path folder, Optional<int[]> user, String userName, String warning, UserClaim claim) {
         this.folder = folder;
         this.user = user;
         this.userName = userName;
         this.warning = warning;
+        this.claim = claim;
     }
 
     /** The user of grading slot {@code slot} (0 for a single grading). */
@@ -61,12 +66,14 @@ final class Sandbox implements AutoCloseable {
     /**
      * A new sandbox in the system's temporary folder for a submission's workers, which run on
      * {@code handout} (a copy is made): isolated when the grader is root and isolation is wanted, as
-     * the user of {@code slot}, made when it does not exist yet.
+     * the user of {@code slot} (made when it does not exist yet), or of the next slot whose user no
+     * other grading on this machine holds ({@link UserClaim}).
      */
     static Sandbox create(Path handout, boolean isolate, int slot) throws IOException {
         Optional<int[]> user = Optional.empty();
         String name = userOf(slot);
         String warning = null;
+        UserClaim claim = null;
         if (!isolate) {
             warning = "student code runs as this grader's own user (isolation turned off)";
         } else if (!isRoot()) {
@@ -75,16 +82,25 @@ final class Sandbox implements AutoCloseable {
         } else if (command("setpriv") == null) {
             warning = "student code runs as root: setpriv (util-linux) is missing";
         } else {
+            for (int s = slot; claim == null; s++) {
+                if (s >= slot + MAX_USERS) {
+                    throw new IOException("every student user from " + userOf(slot) + " on is in use by another grading");
+                }
+                name = userOf(s);
+                claim = UserClaim.tryClaim(name);
+            }
             user = lookUp(name);
-            if (user.isEmpty() && slot > 0) {
+            if (user.isEmpty() && !name.equals(USER)) {
                 user = makeUser(name);
             }
             if (user.isEmpty()) {
+                claim.close();
+                claim = null;
                 warning = "student code runs as root: there is no user " + name + " (setup.sh makes it: useradd --system " + name + ")";
             }
         }
         Path folder = Files.createTempDirectory("ray1-sandbox-");
-        Sandbox sandbox = new Sandbox(folder, user, user.isPresent() ? name : null, warning);
+        Sandbox sandbox = new Sandbox(folder, user, user.isPresent() ? name : null, warning, claim);
         try {
             Files.setPosixFilePermissions(folder, PosixFilePermissions.fromString("rwxr-xr-x"));
             ProjectTree.copyRecursively(handout, folder.resolve("handout"));
@@ -102,6 +118,9 @@ final class Sandbox implements AutoCloseable {
             sandbox.endStrayProcesses();
         } catch (IOException | RuntimeException e) {
             ProjectTree.deleteRecursively(folder);
+            if (claim != null) {
+                claim.close();
+            }
             throw e;
         }
         return sandbox;
@@ -160,11 +179,18 @@ final class Sandbox implements AutoCloseable {
         return new Containment(List.of("true"), Map.of(), userName).endUsersProcesses();
     }
 
-    /** Ends what is left and removes the folder. */
+    /** Ends what is left, removes the folder and what the user left in the shared temporary folders, and gives the user back. */
     @Override
     public void close() throws IOException {
-        endStrayProcesses();
-        ProjectTree.deleteRecursively(folder);
+        try {
+            endStrayProcesses();
+            ProjectTree.deleteRecursively(folder);
+            new Containment(List.of("true"), Map.of(), userName).removeUsersFiles();
+        } finally {
+            if (claim != null) {
+                claim.close();
+            }
+        }
     }
 
     /** Readable by everyone, writable by none but root: the classes a worker runs. */

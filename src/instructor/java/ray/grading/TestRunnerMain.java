@@ -200,11 +200,13 @@ public final class TestRunnerMain {
         Reporter reporter = new Reporter();
         core.addListener(reporter);
         // Task by task (in the order given within a task, render tests last): each task's worker starts once.
+        // A task's hidden tests come after all its others: what its code sees of their inputs can reach
+        // only their own (hidden) messages, since the task's worker and its files end with them.
         List<Class<?>> types = new ArrayList<>();
         for (String name : classNames) {
             types.add(Class.forName(name, false, TestRunnerMain.class.getClassLoader()));
         }
-        types.sort(java.util.Comparator.comparingInt(TestRunnerMain::taskOf));
+        types.sort(java.util.Comparator.comparingInt(TestRunnerMain::taskOf).thenComparing(type -> !visible(type)));
         for (Class<?> type : types) {
             if (java.lang.reflect.Modifier.isAbstract(type.getModifiers())) {
                 continue;
@@ -248,6 +250,12 @@ public final class TestRunnerMain {
                 reporter.testFinished(d);
             }
         }
+    }
+
+    /** Whether a test class's @Points shows its results to students at once (not a hidden test). */
+    private static boolean visible(Class<?> type) {
+        Annotation points = PointsAnnotation.ofClass(type);
+        return points == null || "visible".equals(PointsAnnotation.field(points, "visibility", "gradescope"));
     }
 
     /** The task a test class's @Points names; 0 for none. */

@@ -8,15 +8,21 @@ import static org.junit.Assert.assertTrue;
 import static org.junit.Assume.assumeTrue;
 
 import com.google.gson.Gson;
+import java.io.ByteArrayOutputStream;
 import java.io.File;
+import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.security.MessageDigest;
 import java.util.ArrayList;
+import java.util.HexFormat;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 import java.util.function.UnaryOperator;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -25,104 +31,513 @@ import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import picocli.CommandLine;
+import ray.tools.AutograderBundle;
+import ray.tools.KitInputs;
 
 /**
- * Submissions that attack the grader, graded as the platforms grade them (as root, with student code
- * as {@value Sandbox#USER}): each gets its right score, a valid results.json within the size limit,
- * no leak, within the time bound. Each case adds a row to build/adversarial/summary.txt (submission,
- * score, bytes, leak, seconds) for the record.
+ * Submissions that attack the grader, graded as Gradescope grades them: the real bundle, unpacked
+ * into a folder laid out like /autograder, its run_autograder run as root, with student code as
+ * {@value Sandbox#USER}. Each attack rides on the stub handout (or on the solution, where the attack
+ * needs working code to stand out) and must earn exactly what the code's own work earns. After every
+ * grading: a valid results.json within the size limit, no 64-byte window of a hidden test, a solution
+ * or a solution class in it in any encoding ({@link LeakFinder}), the bundle's files unchanged, and no
+ * process of any student user alive. Each case adds a row to build/adversarial/summary.txt
+ * (attack, score, bytes, leak, seconds) for the record.
  *
- * <p>The grading tree is a private copy of the project (a folder only root may enter), as on the
- * platforms, where run_autograder and the Dockerfile make the grader's files root's alone.
+ * <p>The attacks themselves are under src/instructorTest/adversarial: each is inserted into a student
+ * class's body, and some throw what they found from intersect, where the results show it.
  */
 public class AdversarialSubmissionsTest {
     @ClassRule
     public static final TemporaryFolder FOLDER = new TemporaryFolder();
 
     private static final Path CHECKOUT = Path.of(".").toAbsolutePath().normalize();
-    private static final String LIBRARIES = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
-            .filter(p -> p.endsWith(".jar")).collect(Collectors.joining(File.pathSeparator));
     private static final String SPHERE = "src/main/java/ray/surface/Sphere.java";
-    /** Where the sphere's intersect starts its own work (after the TODO comments). */
-    private static final String INTERSECT_BODY = "Vec3 f = ray.origin.minus(center);\n";
-    private static final String CLASS_BODY = "public class Sphere extends SphereShape {\n";
+    private static final String GROUP = "src/main/java/ray/surface/Group.java";
+    private static final String REPEAT = "src/main/java/ray/shading/RepeatTexture.java";
+    /** Where the sphere's intersect starts, in the solution and the stub alike. */
+    private static final String INTERSECT = "public boolean intersect(IntersectionRecord out, Ray ray) {\n";
     private static final Path SUMMARY = CHECKOUT.resolve("build/adversarial/summary.txt");
 
-    private static Path project;
+    private static Path bundle;
+    private static LeakFinder finder;
+
+    /** Which handed-in files an attack starts from. */
+    private enum Base {
+        /** The handout's stubs: every test fails, 0 points. */
+        STUB,
+        /** The solution: every test passes. */
+        SOLUTION
+    }
 
     @BeforeClass
-    public static void privateGradingTree() throws Exception {
+    public static void buildTheBundle() throws Exception {
         assumeTrue("grading isolation needs root and the user " + Sandbox.USER + " (.ci/run and setup.sh make it)",
                 Sandbox.isRoot() && Sandbox.lookUp(Sandbox.USER).isPresent());
-        Path root = FOLDER.getRoot().toPath();
-        Files.setPosixFilePermissions(root, PosixFilePermissions.fromString("rwx------"));
-        project = root.resolve("ray1");
-        ProjectTree.copy(CHECKOUT, project, Map.of());
+        Files.setPosixFilePermissions(FOLDER.getRoot().toPath(), PosixFilePermissions.fromString("rwx------"));
+        bundle = FOLDER.getRoot().toPath().resolve("ray1-gradescope.zip");
+        KitInputs kit = new KitInputs();
+        AutograderBundle.build(CHECKOUT, bundle, kit.classes, kit.libraries);
+        Path unpacked = FOLDER.getRoot().toPath().resolve("bundle-as-shipped");
+        KitInputs.unpack(bundle, unpacked);
+        finder = LeakFinder.of(unpacked.resolve("ray1"));
     }
 
     /** The graded results and what grading them took. */
     private static final class Graded {
         Map<String, Object> results;
+        List<Map<String, Object>> tests;
         String json;
         long bytes;
         double seconds;
-        Path resultsFile;
+        Path root;
+
+        double score() {
+            return ((Number) results.get("score")).doubleValue();
+        }
+
+        /** Every test's output, one after another. */
+        String outputs() {
+            return tests.stream().map(t -> (String) t.get("output")).collect(Collectors.joining("\n"));
+        }
+    }
+
+    // ---- The attacks of the old design, where student code ran beside the tests ----
+
+    /**
+     * Forged results: a thread writes frames of every type (and lines that look like passed tests) to
+     * the worker's raw standard output, and passed-test lines into every file it can find named on a
+     * command line, as long as the worker runs. The stub still scores nothing, and the grade finishes.
+     */
+    @Test(timeout = 900_000)
+    public void forgedFramesAndForgedFilesEarnNothing() throws Exception {
+        Graded graded = grade("forged-frames", Base.STUB, Map.of(SPHERE, probe("ForgeProbe")));
+        assertEquals(0, graded.score(), 0);
+        assertEquals("every test fails", Boolean.FALSE, passing(graded.tests, name -> true));
+        assertClean(graded, 240, "forged frames and result files (stub)");
     }
 
     /**
-     * A static initializer starts a detached process (its own session, so not the test JVM's child)
-     * that writes a score of 999 into the platform's results file, at once and every 0.2 s after:
-     * the first writes fail (the student's user cannot write there), and the process is ended before
-     * the grader writes its own results, which stay the grader's.
+     * Through sun.misc.Unsafe, student code looks for the test runner, JUnit, the tests and their
+     * helpers, and overwrites the static fields of every grading class it can load: it finds none of
+     * them (they are in the judge), and breaking its own worker earns nothing.
      */
-    @Test(timeout = 600_000)
-    @SuppressWarnings("unchecked")
+    @Test(timeout = 900_000)
+    public void unsafeFindsNoGradingClassAndEarnsNothing() throws Exception {
+        Graded graded = grade("unsafe", Base.STUB, Map.of(SPHERE, both(probe("UnsafeProbe"), throwing("unsafeNext()"))));
+        assertTrue(graded.outputs(), graded.outputs().contains("unsafe-probe: found []"));
+        assertFalse(graded.outputs(), graded.outputs().matches("(?s).*unsafe-probe: found \\[[^\\]].*"));
+        assertEquals(0, graded.score(), 0);
+        assertClean(graded, 240, "Unsafe on the grader's classes (stub)");
+    }
+
+    /**
+     * Writable inputs: student code tries to write over, and delete, every scene, mesh, texture,
+     * reference, class file and results file it can reach from / and from every command line. It
+     * changes none (the judge's are root's, in a folder only root may enter), and earns nothing.
+     */
+    @Test(timeout = 900_000)
+    public void theInputsCannotBeChanged() throws Exception {
+        Graded graded = grade("overwrite", Base.STUB, Map.of(SPHERE, both(probe("OverwriteProbe"), throwing("OVERWRITE_REPORT"))));
+        assertTrue(graded.outputs(), graded.outputs().matches("(?s).*overwrite-probe: looked at [1-9]\\d* files, changed 0: .*"));
+        assertEquals(0, graded.score(), 0);
+        assertClean(graded, 240, "overwrites every input it finds (stub)");
+    }
+
+    /**
+     * Shadowed test helpers: a handed-in file that also declares a top-level class named like a test
+     * helper (HitAsserts beside the sphere, TextureLookups beside the repeat texture) is refused before
+     * anything runs, with a line naming the class; the stub's score stays 0.
+     */
+    @Test(timeout = 900_000)
+    public void aClassNamedLikeATestHelperIsRefused() throws Exception {
+        Graded graded = grade("shadowed-helpers", Base.STUB, Map.of(
+                SPHERE, source -> source + "\nclass HitAsserts {\n    static void assertHit() {\n    }\n}\n",
+                REPEAT, source -> source + "\nclass TextureLookups {\n}\n"));
+        assertEquals(0, graded.score(), 0);
+        for (Map<String, Object> t : graded.tests) {
+            String name = (String) t.get("name");
+            String output = (String) t.get("output");
+            if (name.startsWith("Task 2 ")) {
+                assertTrue(output, output.contains("the class ray.surface.HitAsserts must not be defined there"));
+            } else if (name.startsWith("Task 5 ")) {
+                assertTrue(output, output.contains("the class ray.shading.TextureLookups must not be defined there"));
+            }
+        }
+        assertClean(graded, 240, "top-level classes named like test helpers (stub)");
+    }
+
+    /**
+     * Processes that outlive their JVM: a detached child in a session of its own that ignores signals,
+     * names a folder of its own in RAY1_SANDBOX, stops every process its user may signal and grows a
+     * file, plus an orphaned grandchild and a plain sleeper. None is alive after grading, and the
+     * stub earns nothing.
+     */
+    @Test(timeout = 900_000)
+    public void processesItStartsEndWithTheGrading() throws Exception {
+        Graded graded = grade("lingering-processes", Base.STUB, Map.of(SPHERE, probe("LingerProbe")));
+        assertEquals(0, graded.score(), 0);
+        assertClean(graded, 240, "detached, stopping, signal-proof children (stub)");
+    }
+
+    /**
+     * A stalled worker: the group's code starts the stopping children above and then never returns from
+     * intersect. The grade ends at its time limit with the points earned before (Tasks 1 to 3 in full),
+     * and writes results.json.
+     */
+    @Test(timeout = 900_000)
+    public void aStalledWorkerEndsWithinTheTimeLimitWithThePointsEarnedSoFar() throws Exception {
+        int limit = 60;
+        Graded graded = grade("stalled-worker", Base.SOLUTION, Map.of(GROUP, both(probe("LingerProbe"), source -> insertAfter(source,
+                INTERSECT, "        try {\n            Thread.sleep(Long.MAX_VALUE);\n        } catch (InterruptedException e) {\n"
+                        + "            Thread.currentThread().interrupt();\n        }\n"))), Map.of("RAY1_TIME_LIMIT", String.valueOf(limit)));
+        assertEquals("Tasks 1 to 3 keep their points", Boolean.TRUE, passing(graded.tests, name -> name.matches("Task [123] .*")));
+        double earlier = graded.tests.stream().filter(t -> ((String) t.get("name")).matches("Task [123] .*"))
+                .mapToDouble(t -> ((Number) t.get("max_score")).doubleValue()).sum();
+        assertTrue(earlier > 100);
+        assertEquals("only the tasks before the group's earn points", earlier, graded.score(), 1e-9);
+        assertTrue("the time limit stopped it", graded.outputs().contains("grading stopped at its time limit"));
+        assertClean(graded, limit + 30, "group stalls its worker, stops processes; 60 s limit (solution)");
+    }
+
+    /**
+     * Secrets in memory: student code reads its own JVM's memory (and every other process's it may)
+     * for class files and test sources, and throws what it kept, gzipped, in base64. It reads class
+     * files (the framework's, its own), none of them secret: the hidden tests, the tests and the other
+     * tasks' solutions are never in its JVM.
+     */
+    @Test(timeout = 900_000)
+    public void itsMemoryHoldsNoSecret() throws Exception {
+        Graded graded = grade("memory", Base.STUB, Map.of(SPHERE, both(probe("MemoryProbe"), throwing("memoryNext()"))));
+        java.util.regex.Matcher found = java.util.regex.Pattern.compile("memory-probe: (\\d+) class files").matcher(graded.outputs());
+        assertTrue(graded.outputs(), found.find());
+        assertTrue("it read class files out of its memory: " + found.group(), Integer.parseInt(found.group(1)) > 0);
+        assertEquals(0, graded.score(), 0);
+        assertClean(graded, 240, "reads /proc/self/mem for classes, gzip+base64 (stub)");
+    }
+
+    /**
+     * Across submissions under gradeAll, two at once: a submission between two correct ones writes into
+     * every other sandbox folder it can find, kills every process it can see and leaves a process
+     * trying again every 0.2 s. The correct ones get every point, it gets the stub's 0, and no process
+     * of a student user is left.
+     */
+    @Test(timeout = 900_000)
+    public void aSubmissionCannotReachTheOnesGradedBesideIt() throws Exception {
+        Path dir = FOLDER.getRoot().toPath().resolve("class-with-attacker");
+        writeSubmission(dir.resolve("submission_a"), Base.SOLUTION, Map.of());
+        writeSubmission(dir.resolve("submission_b"), Base.STUB, Map.of(SPHERE, probe("CrossProbe")));
+        writeSubmission(dir.resolve("submission_c"), Base.SOLUTION, Map.of());
+        Path out = FOLDER.getRoot().toPath().resolve("class-grades");
+        ByteArrayOutputStream log = new ByteArrayOutputStream();
+        GradeAll command = new GradeAll();
+        command.log = new PrintStream(log, true, StandardCharsets.UTF_8);
+        String libraries = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
+                .filter(p -> p.endsWith(".jar")).collect(Collectors.joining(File.pathSeparator));
+        long start = System.nanoTime();
+        int status = new CommandLine(command).execute("--project", CHECKOUT.toString(), "--classpath", libraries,
+                "--submissions", dir.toString(), "--out", out.toString(), "--jobs", "2");
+        double seconds = (System.nanoTime() - start) / 1e9;
+        assertEquals(log.toString(StandardCharsets.UTF_8), 0, status);
+        for (String correct : List.of("submission_a", "submission_c")) {
+            GradedResult result = GradedResult.read(out.resolve(correct).resolve("results.json"));
+            assertTrue(correct + ": " + result, result.score() >= result.maxScore() && result.maxScore() > 0);
+        }
+        Graded attacker = read(out.resolve("submission_b").resolve("results.json"));
+        attacker.seconds = seconds;
+        assertEquals(0, attacker.score(), 0);
+        assertEquals("no process of a student user is left", List.of(), studentProcesses());
+        record("gradeAll: writes into other sandboxes, kills all (stub)", attacker, "no");
+    }
+
+    // ---- Attacks on the limits: time, memory, output, the platform's results file, the disk ----
+
+    /**
+     * A static initializer starts a detached process (its own session) that writes a score of 999 into
+     * the platform's results file, at once and every 0.2 s after: the writes fail (the student's user
+     * cannot write there), the process is ended with the grading, and the results are the grader's.
+     */
+    @Test(timeout = 900_000)
     public void aDetachedProcessCannotReplaceTheResults() throws Exception {
-        Path platformResults = FOLDER.getRoot().toPath().resolve("platform/results/results.json");
-        Files.createDirectories(platformResults.getParent());
+        Path platformResults = FOLDER.getRoot().toPath().resolve("fake-results/results/results.json");
         String fake = "{\"score\": 999.0, \"tests\": []}";
         String loop = "while true; do echo '" + fake + "' > " + platformResults + "; echo '" + fake + "' > "
                 + platformResults.getParent().resolve("extra.json") + "; sleep 0.2; done";
-        Graded graded = grade("fake-results", Map.of(SPHERE, source -> insertAfter(source, CLASS_BODY,
+        Graded graded = grade("fake-results", Base.SOLUTION, Map.of(SPHERE, source -> insertAfter(source, CLASS_LINE.apply(source),
                 "    static {\n        try {\n            new ProcessBuilder(\"setsid\", \"bash\", \"-c\", \"" + loop.replace("\"", "\\\"")
                         + "\").redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();\n"
-                        + "        } catch (java.io.IOException e) {\n            throw new java.io.UncheckedIOException(e);\n        }\n    }\n")),
-                platformResults);
+                        + "        } catch (java.io.IOException e) {\n            throw new java.io.UncheckedIOException(e);\n        }\n    }\n")));
         // Anything still running would overwrite the file within this wait.
         Thread.sleep(1500);
-        String after = Files.readString(platformResults, StandardCharsets.UTF_8);
-        assertEquals("the platform's results.json is the grader's", graded.json, after);
+        assertEquals("the platform's results.json is the grader's", graded.json, Files.readString(platformResults, StandardCharsets.UTF_8));
         assertFalse(Files.exists(platformResults.getParent().resolve("extra.json")));
-        double score = ((Number) graded.results.get("score")).doubleValue();
-        assertNotEquals(999.0, score, 0);
-        double sum = ((List<Map<String, Object>>) graded.results.get("tests")).stream()
-                .mapToDouble(t -> ((Number) t.get("score")).doubleValue()).sum();
-        assertEquals("the score is the tests' points", sum, score, 1e-9);
-        assertTrue("every test passes: the sphere is the solution",
-                passing((List<Map<String, Object>>) graded.results.get("tests"), name -> true) == Boolean.TRUE);
-        assertEquals("no process of the student's user is left", 0, studentProcesses());
-        record("detached process writes a fake results.json", graded, "no");
+        assertNotEquals(999.0, graded.score(), 0);
+        double sum = graded.tests.stream().mapToDouble(t -> ((Number) t.get("score")).doubleValue()).sum();
+        assertEquals("the score is the tests' points", sum, graded.score(), 1e-9);
+        assertEquals("every test passes: the sphere is the solution", Boolean.TRUE, passing(graded.tests, name -> true));
+        assertClean(graded, 240, "detached process writes a fake results.json");
     }
 
     /**
-     * A sphere that, before its first test, looks for the hidden tests and the solution everywhere
-     * it might find them (the working folder, the class path, the temporary folder, the platforms'
+     * A sphere that, before its first test, looks for the hidden tests and the solution everywhere it
+     * might find them (the working folder, the class path, the temporary folder, the platforms'
      * folders, every path on any process's command line, the class loaders as resources and through
      * reflection) and then throws what it found, a slice per test, in plain text, base64, reversed
-     * base64 and hex. It finds nothing to throw, and the results carry no 64-byte window of any
-     * hidden file or solution block in any of those encodings.
+     * base64 and hex. It finds nothing to throw.
      */
-    @Test(timeout = 600_000)
+    @Test(timeout = 900_000)
     public void aSubmissionThatWalksTheDiskLeaksNothing() throws Exception {
-        String probe = Files.readString(CHECKOUT.resolve("src/instructorTest/adversarial/LeakProbe.java.txt"),
-                StandardCharsets.UTF_8);
-        Graded graded = grade("leak", Map.of(SPHERE, source -> insertAfter(insertAfter(source, CLASS_BODY, probe), INTERSECT_BODY,
-                "        if (f != null) {\n            throw new IllegalStateException(leakProbeNext());\n        }\n")), null);
+        Graded graded = grade("leak", Base.SOLUTION, Map.of(SPHERE, both(probe("LeakProbe"), throwing("leakProbeNext()"))));
         String report = graded.json.contains("leak-probe: ") ? graded.json.split("leak-probe: ")[1].split("\\\\n")[0] : "(none)";
-        // Nothing on disk; what the class loaders give (the explorer's page, say) is no secret, as the finder checks below.
         assertTrue("what the probe found: " + report, report.startsWith("found 0 files, "));
-        LeakFinder finder = LeakFinder.of(project);
-        assertTrue(finder.secretBytes() > 50_000);
+        assertClean(graded, 240, "disk walk, leak in plain/base64/reversed/hex");
+    }
+
+    /** The finder itself finds a hidden test and a solution class in each encoding the probes use, and nothing in an ordinary message. */
+    @Test
+    public void theLeakFinderFindsEachEncoding() throws Exception {
+        byte[] hidden = Files.readAllBytes(CHECKOUT.resolve("src/instructorTest/java/ray/hidden/Task2HiddenTest.java"));
+        byte[] slice = java.util.Arrays.copyOfRange(hidden, 1001, 1400);
+        String base64 = java.util.Base64.getEncoder().encodeToString(slice);
+        assertEquals("plain", finder.leakIn("boom: " + new String(slice, StandardCharsets.UTF_8)));
+        assertEquals("base64", finder.leakIn("b64:" + base64));
+        assertEquals("base64 reversed", finder.leakIn("rev:" + new StringBuilder(base64).reverse()));
+        assertEquals("hex", finder.leakIn("hex:" + HexFormat.of().formatHex(slice)));
+        Path solutionClass = FOLDER.getRoot().toPath().resolve("bundle-as-shipped/ray1").resolve(PrecompiledTree.FOLDER)
+                .resolve("classes/ray/surface/Triangle.class");
+        byte[] code = Files.readAllBytes(solutionClass);
+        ByteArrayOutputStream zipped = new ByteArrayOutputStream();
+        try (java.util.zip.GZIPOutputStream gzip = new java.util.zip.GZIPOutputStream(zipped)) {
+            gzip.write(code);
+        }
+        assertEquals("gzip base64", finder.leakIn("memory: " + java.util.Base64.getEncoder().encodeToString(zipped.toByteArray())));
+        assertNull(finder.leakIn("[Task 2 (Sphere)] expected a hit at t = 4; your intersect returned false"));
+        // The handout's own classes are no secret, though the solution's share bytes with them.
+        Path stubClass = solutionClass.getParent().getParent().getParent().resolveSibling("handout/ray/surface/Triangle.class");
+        assertNull(finder.leakIn(java.util.Base64.getEncoder().encodeToString(Files.readAllBytes(stubClass))));
+    }
+
+    /**
+     * A static initializer that allocates until the heap is full: the sphere's tests say it ran out of
+     * memory, in the sphere's task, never that a scene file is at fault; every other task keeps its points.
+     */
+    @Test(timeout = 900_000)
+    public void runningOutOfMemoryInAStaticInitializerIsNamedAsSuch() throws Exception {
+        Graded graded = grade("out-of-memory", Base.SOLUTION, Map.of(SPHERE, source -> insertAfter(source, CLASS_LINE.apply(source),
+                "    static {\n        hoard();\n    }\n\n    private static void hoard() {\n"
+                        + "        java.util.List<long[]> all = new java.util.ArrayList<>();\n"
+                        + "        while (all.size() >= 0) {\n            all.add(new long[1 << 20]);\n        }\n    }\n")));
+        List<String> sphereMessages = graded.tests.stream().filter(t -> ((String) t.get("name")).startsWith("Task 2 "))
+                .map(t -> (String) t.get("output")).collect(Collectors.toList());
+        assertTrue(sphereMessages.toString(), sphereMessages.stream().anyMatch(m -> m.contains("your code ran out of memory (java.lang.OutOfMemoryError")));
+        for (String message : sphereMessages) {
+            assertTrue(message, message.contains("ran out of memory") || message.contains("its static initializer failed"));
+            assertFalse(message, message.contains("scene file") || message.contains("does not load"));
+        }
+        assertEquals("the other tasks pass", Boolean.TRUE, passing(graded.tests, name -> !name.startsWith("Task 2 ")));
+        assertClean(graded, 240, "static initializer fills the heap");
+    }
+
+    /** A loop that never ends in intersect: the sphere's tests fail, every other task keeps its points, in under 2 minutes. */
+    @Test(timeout = 900_000)
+    public void anInfiniteLoopCostsOnlyItsTaskAndLittleTime() throws Exception {
+        Graded graded = grade("infinite-loop", Base.SOLUTION, Map.of(SPHERE, source -> insertAfter(source, INTERSECT,
+                "        while (ray != null) {\n            Thread.onSpinWait();\n        }\n")));
+        assertEquals("the sphere's tests fail", Boolean.FALSE, passing(graded.tests, name -> name.startsWith("Task 2 ")));
+        assertEquals("the other tasks pass", Boolean.TRUE, passing(graded.tests, name -> !name.startsWith("Task 2 ")));
+        assertClean(graded, 120, "infinite loop in intersect");
+    }
+
+    /**
+     * Every student class loops forever in its static initializer, so every task's code never
+     * finishes: the worst case a submission can make without slowing each test just under its limit
+     * (which the time limit bounds). It is graded, 0 points, well within PrairieLearn's 150 s.
+     */
+    @Test(timeout = 900_000)
+    public void codeThatNeverFinishesInAnyTaskIsGradedWithinThePlatformsLimits() throws Exception {
+        Map<String, UnaryOperator<String>> edits = new LinkedHashMap<>();
+        for (String file : StudentFiles.in(CHECKOUT).keySet()) {
+            edits.put(file, AdversarialSubmissionsTest::loopingStaticInitializer);
+        }
+        Graded graded = grade("every-task-loops", Base.SOLUTION, edits);
+        assertEquals("every test fails", Boolean.FALSE, passing(graded.tests, name -> true));
+        assertEquals(0.0, graded.score(), 0);
+        assertClean(graded, 150, "every task loops in a static initializer");
+    }
+
+    /** A sphere that prints 50 MB and throws 5 MB messages: results.json stays under 1 MB and the other tasks pass. */
+    @Test(timeout = 900_000)
+    public void hugeOutputKeepsTheResultsSmall() throws Exception {
+        Graded graded = grade("huge-output", Base.SOLUTION, Map.of(SPHERE, source -> insertAfter(source, INTERSECT,
+                "        if (ray != null) {\n            String shout = \"shout \".repeat(900_000);\n"
+                        + "            for (int i = 0; i < 10; i++) {\n                System.out.print(shout);\n            }\n"
+                        + "            throw new IllegalStateException(shout);\n        }\n")));
+        assertEquals("the other tasks pass", Boolean.TRUE, passing(graded.tests, name -> !name.startsWith("Task 2 ")));
+        assertClean(graded, 240, "prints 50 MB, throws 5 MB messages");
+    }
+
+    /**
+     * The whole grade stops at its time limit: the test then running and every later one fail with the
+     * reason, the points earned before count, and results.json is written soon after the limit.
+     */
+    @Test(timeout = 900_000)
+    public void aWholeGradeStopsAtItsTimeLimitWithThePointsEarnedSoFar() throws Exception {
+        // Tasks 2 to 6 never finish, each costing at least its first test's limit: the time limit comes in Task 3 or 4.
+        int limit = 25;
+        Map<String, UnaryOperator<String>> edits = new LinkedHashMap<>();
+        for (Map.Entry<String, Integer> file : StudentFiles.in(CHECKOUT).entrySet()) {
+            if (file.getValue() > 1) {
+                edits.put(file.getKey(), AdversarialSubmissionsTest::loopingStaticInitializer);
+            }
+        }
+        Graded graded = grade("time-limit", Base.SOLUTION, edits, Map.of("RAY1_TIME_LIMIT", String.valueOf(limit)));
+        List<Map<String, Object>> stopped = graded.tests.stream()
+                .filter(t -> ((String) t.get("output")).contains("grading stopped at its time limit")).collect(Collectors.toList());
+        assertTrue("the last task's tests are stopped", stopped.stream().anyMatch(t -> ((String) t.get("name")).startsWith("Task 6 ")));
+        for (Map<String, Object> t : stopped) {
+            assertEquals(t.get("name") + " earns nothing", 0.0, ((Number) t.get("score")).doubleValue(), 0);
+        }
+        double earned = graded.tests.stream().mapToDouble(t -> ((Number) t.get("score")).doubleValue()).sum();
+        assertEquals(earned, graded.score(), 1e-9);
+        assertTrue("points earned before the limit count", earned > 0);
+        for (int task = 1; task <= 6; task++) {
+            String prefix = "Task " + task + " ";
+            assertTrue("task " + task + "'s tests are listed", graded.tests.stream().anyMatch(t -> ((String) t.get("name")).startsWith(prefix)));
+        }
+        assertClean(graded, limit + 20, "tasks 2-6 never finish, 25 s time limit");
+    }
+
+    // ---- Grading through the bundle ----
+
+    private static Graded grade(String name, Base base, Map<String, UnaryOperator<String>> edits) throws Exception {
+        return grade(name, base, edits, Map.of());
+    }
+
+    /**
+     * Unpacks the bundle into a fresh folder laid out like /autograder, hands in the base's files with
+     * {@code edits} applied, and runs run_autograder as the platform does, with {@code environment}
+     * added; checks the results' size and that the bundle's files are as shipped.
+     */
+    private static Graded grade(String name, Base base, Map<String, UnaryOperator<String>> edits, Map<String, String> environment)
+            throws Exception {
+        Path root = FOLDER.getRoot().toPath().resolve(name);
+        KitInputs.unpack(bundle, root.resolve("source"));
+        writeSubmission(root.resolve("submission"), base, edits);
+        String before = fingerprint(root.resolve("source"));
+        Map<String, String> variables = new LinkedHashMap<>(environment);
+        variables.put("AUTOGRADER_ROOT", root.toString());
+        Path log = root.resolve("run.log");
+        long start = System.nanoTime();
+        assertEquals(0, KitInputs.runScript(root.resolve("source/run_autograder"), variables, log));
+        double seconds = (System.nanoTime() - start) / 1e9;
+        Graded graded = read(root.resolve("results/results.json"));
+        graded.seconds = seconds;
+        graded.root = root;
+        // Kept beside the summary, to read what each attack got.
+        Files.createDirectories(SUMMARY.getParent());
+        Files.writeString(SUMMARY.resolveSibling(name + "-results.json"), graded.json, StandardCharsets.UTF_8);
+        Files.copy(log, SUMMARY.resolveSibling(name + "-grader.log"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        assertTrue(graded.bytes + " bytes", graded.bytes <= OutputLimits.RESULTS_BYTES);
+        assertEquals("the bundle's files are as shipped", before, fingerprint(root.resolve("source")));
+        return graded;
+    }
+
+    @SuppressWarnings("unchecked")
+    private static Graded read(Path resultsFile) throws Exception {
+        Graded graded = new Graded();
+        graded.json = Files.readString(resultsFile, StandardCharsets.UTF_8);
+        graded.bytes = Files.size(resultsFile);
+        graded.results = new Gson().fromJson(graded.json, Map.class);
+        graded.tests = (List<Map<String, Object>>) graded.results.get("tests");
+        return graded;
+    }
+
+    /** Writes {@code base}'s student files into {@code folder}, flat as the platforms hand them in, with {@code edits} applied. */
+    private static void writeSubmission(Path folder, Base base, Map<String, UnaryOperator<String>> edits) throws Exception {
+        Files.createDirectories(folder);
+        for (String file : StudentFiles.in(CHECKOUT).keySet()) {
+            String source = Files.readString(CHECKOUT.resolve(file), StandardCharsets.UTF_8);
+            if (base == Base.STUB) {
+                source = SolutionMarkers.studentVersion(source, file);
+            }
+            source = edits.getOrDefault(file, UnaryOperator.identity()).apply(source);
+            Files.writeString(folder.resolve(Path.of(file).getFileName().toString()), source, StandardCharsets.UTF_8);
+        }
+    }
+
+    /** The SHA-256 of every file's path, mode and bytes under {@code root}. */
+    private static String fingerprint(Path root) throws Exception {
+        MessageDigest digest = MessageDigest.getInstance("SHA-256");
+        try (Stream<Path> walk = Files.walk(root)) {
+            for (Path p : walk.sorted().collect(Collectors.toList())) {
+                digest.update(root.relativize(p).toString().getBytes(StandardCharsets.UTF_8));
+                digest.update(PosixFilePermissions.toString(Files.getPosixFilePermissions(p)).getBytes(StandardCharsets.UTF_8));
+                if (Files.isRegularFile(p)) {
+                    digest.update(Files.readAllBytes(p));
+                }
+            }
+        }
+        return HexFormat.of().formatHex(digest.digest());
+    }
+
+    /** The attack in src/instructorTest/adversarial/{@code name}.java.txt, inserted at the start of the class's body. */
+    private static UnaryOperator<String> probe(String name) {
+        return source -> {
+            try {
+                String probe = Files.readString(CHECKOUT.resolve("src/instructorTest/adversarial/" + name + ".java.txt"), StandardCharsets.UTF_8);
+                // The probes name the sphere's class where they need a class of their own; any student class will do.
+                String className = source.replaceFirst("(?s).*public class (\\w+).*", "$1");
+                return insertAfter(source, CLASS_LINE.apply(source), probe.replace("Sphere.class", className + ".class"));
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        };
+    }
+
+    /** {@code first}, then {@code second}. */
+    private static UnaryOperator<String> both(UnaryOperator<String> first, UnaryOperator<String> second) {
+        return source -> second.apply(first.apply(source));
+    }
+
+    /** Intersect throws {@code message} (a Java expression) as its first statement. */
+    private static UnaryOperator<String> throwing(String message) {
+        return source -> insertAfter(source, INTERSECT,
+                "        if (ray != null) {\n            throw new IllegalStateException(" + message + ");\n        }\n");
+    }
+
+    /** The line that opens the public class's body. */
+    private static final UnaryOperator<String> CLASS_LINE = source -> source.replaceFirst("(?s).*?(public class [^{]*\\{\n).*", "$1");
+
+    private static String insertAfter(String source, String anchor, String inserted) {
+        int at = source.indexOf(anchor);
+        assertTrue("anchor not found: " + anchor, at >= 0);
+        return source.substring(0, at + anchor.length()) + inserted + source.substring(at + anchor.length());
+    }
+
+    /** The class with a static initializer that never ends. */
+    private static String loopingStaticInitializer(String source) {
+        return insertAfter(source, CLASS_LINE.apply(source),
+                "    static {\n        while (System.nanoTime() != 0) {\n            Thread.onSpinWait();\n        }\n    }\n");
+    }
+
+    /** TRUE when every test named so passes, FALSE when none does, null when some do. */
+    private static Boolean passing(List<Map<String, Object>> tests, Predicate<String> named) {
+        List<Boolean> passed = tests.stream().filter(t -> named.test((String) t.get("name"))).map(t -> "passed".equals(t.get("status")))
+                .distinct().collect(Collectors.toList());
+        return passed.size() == 1 ? passed.get(0) : null;
+    }
+
+    /** Every process of a student user (any grading slot's) still alive, as "pid user command". */
+    private static List<String> studentProcesses() {
+        return ProcessHandle.allProcesses().filter(p -> p.info().user().map(u -> u.startsWith(Sandbox.USER)).orElse(false))
+                .map(p -> p.pid() + " " + p.info().user().orElse("") + " " + p.info().commandLine().orElse("")).collect(Collectors.toList());
+    }
+
+    /**
+     * Graded within {@code seconds}, leaking nothing the finder knows in any of its encodings, with no
+     * process of a student user left; recorded as {@code attack}.
+     */
+    private static void assertClean(Graded graded, double seconds, String attack) throws Exception {
         List<String> leaks = new ArrayList<>();
         collectStrings(graded.results, text -> {
             String how = finder.leakIn(text);
@@ -131,163 +546,9 @@ public class AdversarialSubmissionsTest {
             }
         });
         assertEquals("leaks: " + leaks, List.of(), leaks);
-        record("disk walk, leak in plain/base64/reversed/hex", graded, "no");
-    }
-
-    /** The finder itself finds a hidden test in each encoding the probe uses, and nothing in an ordinary message. */
-    @Test
-    public void theLeakFinderFindsEachEncoding() throws Exception {
-        LeakFinder finder = LeakFinder.of(project);
-        byte[] hidden = Files.readAllBytes(project.resolve("src/instructorTest/java/ray/hidden/Task2HiddenTest.java"));
-        byte[] slice = java.util.Arrays.copyOfRange(hidden, 1001, 1400);
-        String base64 = java.util.Base64.getEncoder().encodeToString(slice);
-        StringBuilder hex = new StringBuilder();
-        for (byte b : slice) {
-            hex.append(String.format("%02x", b));
-        }
-        assertEquals("plain", finder.leakIn("boom: " + new String(slice, StandardCharsets.UTF_8)));
-        assertEquals("base64", finder.leakIn("b64:" + base64));
-        assertEquals("base64 reversed", finder.leakIn("rev:" + new StringBuilder(base64).reverse()));
-        assertEquals("hex", finder.leakIn("hex:" + hex));
-        assertNull(finder.leakIn("[Task 2 (Sphere)] expected a hit at t = 4; your intersect returned false"));
-    }
-
-    /**
-     * A static initializer that allocates until the heap is full: the sphere's tests say it ran out
-     * of memory, in the sphere's task, never that a scene file is at fault; every other task keeps
-     * its points.
-     */
-    @Test(timeout = 600_000)
-    @SuppressWarnings("unchecked")
-    public void runningOutOfMemoryInAStaticInitializerIsNamedAsSuch() throws Exception {
-        Graded graded = grade("out-of-memory", Map.of(SPHERE, source -> insertAfter(source, CLASS_BODY,
-                "    static {\n        hoard();\n    }\n\n    private static void hoard() {\n"
-                        + "        java.util.List<long[]> all = new java.util.ArrayList<>();\n"
-                        + "        while (all.size() >= 0) {\n            all.add(new long[1 << 20]);\n        }\n    }\n")), null);
-        List<Map<String, Object>> tests = (List<Map<String, Object>>) graded.results.get("tests");
-        List<String> sphereMessages = tests.stream().filter(t -> ((String) t.get("name")).startsWith("Task 2 "))
-                .map(t -> (String) t.get("output")).collect(Collectors.toList());
-        assertTrue(sphereMessages.stream().anyMatch(m -> m.contains("your code ran out of memory (java.lang.OutOfMemoryError")));
-        for (String message : sphereMessages) {
-            assertTrue(message, message.contains("ran out of memory") || message.contains("its static initializer failed"));
-            assertFalse(message, message.contains("scene file") || message.contains("does not load"));
-        }
-        assertTrue("the other tasks pass", passing(tests, name -> !name.startsWith("Task 2 ")) == Boolean.TRUE);
-        record("static initializer fills the heap", graded, "no");
-    }
-
-    /** A loop that never ends in intersect: the sphere's tests fail, every other task keeps its points, in under 2 minutes. */
-    @Test(timeout = 600_000)
-    @SuppressWarnings("unchecked")
-    public void anInfiniteLoopCostsOnlyItsTaskAndLittleTime() throws Exception {
-        Graded graded = grade("infinite-loop", Map.of(SPHERE, source -> insertAfter(source, INTERSECT_BODY,
-                "        while (f != null) {\n            f = f.plus(f.times(0));\n        }\n")), null);
-        List<Map<String, Object>> tests = (List<Map<String, Object>>) graded.results.get("tests");
-        assertTrue("the sphere's tests fail", passing(tests, name -> name.startsWith("Task 2 ")) == Boolean.FALSE);
-        assertTrue("the other tasks pass", passing(tests, name -> !name.startsWith("Task 2 ")) == Boolean.TRUE);
-        withinAndClean(graded, 120, "infinite loop in intersect");
-    }
-
-    /**
-     * Every student class loops forever in its static initializer, so every task's code never
-     * finishes: the worst case a submission can make without slowing each test just under its limit
-     * (which the time limit bounds). It is graded, 0 points, well within PrairieLearn's 150 s.
-     */
-    @Test(timeout = 600_000)
-    @SuppressWarnings("unchecked")
-    public void codeThatNeverFinishesInAnyTaskIsGradedWithinThePlatformsLimits() throws Exception {
-        Map<String, UnaryOperator<String>> edits = new java.util.LinkedHashMap<>();
-        for (String file : StudentFiles.in(project).keySet()) {
-            edits.put(file, AdversarialSubmissionsTest::loopingStaticInitializer);
-        }
-        Graded graded = grade("every-task-loops", edits, null);
-        List<Map<String, Object>> tests = (List<Map<String, Object>>) graded.results.get("tests");
-        assertTrue("every test fails", passing(tests, name -> true) == Boolean.FALSE);
-        assertEquals(0.0, ((Number) graded.results.get("score")).doubleValue(), 0);
-        withinAndClean(graded, 150, "every task loops in a static initializer");
-    }
-
-    /** A sphere that prints 50 MB and throws 5 MB messages: results.json stays under 1 MB and the other tasks pass. */
-    @Test(timeout = 600_000)
-    @SuppressWarnings("unchecked")
-    public void hugeOutputKeepsTheResultsSmall() throws Exception {
-        Graded graded = grade("huge-output", Map.of(SPHERE, source -> insertAfter(source, INTERSECT_BODY,
-                "        if (f != null) {\n            String shout = \"shout \".repeat(900_000);\n"
-                        + "            for (int i = 0; i < 10; i++) {\n                System.out.print(shout);\n            }\n"
-                        + "            throw new IllegalStateException(shout);\n        }\n")), null);
-        List<Map<String, Object>> tests = (List<Map<String, Object>>) graded.results.get("tests");
-        assertTrue("the other tasks pass", passing(tests, name -> !name.startsWith("Task 2 ")) == Boolean.TRUE);
-        record("prints 50 MB, throws 5 MB messages", graded, "no");
-    }
-
-    /**
-     * The whole grade stops at --time-limit: the test then running and every later one fail with the
-     * reason, the points earned before count, and results.json is written soon after the limit.
-     */
-    @Test(timeout = 600_000)
-    @SuppressWarnings("unchecked")
-    public void aWholeGradeStopsAtItsTimeLimitWithThePointsEarnedSoFar() throws Exception {
-        // Tasks 2 to 6 never finish, each costing at least its first test's 10 s: the limit comes in Task 3 or 4.
-        int limit = 25;
-        Map<String, UnaryOperator<String>> edits = new java.util.LinkedHashMap<>();
-        for (Map.Entry<String, Integer> file : StudentFiles.in(project).entrySet()) {
-            if (file.getValue() > 1) {
-                edits.put(file.getKey(), AdversarialSubmissionsTest::loopingStaticInitializer);
-            }
-        }
-        Graded graded = grade("time-limit", edits, null, "--time-limit", String.valueOf(limit));
-        List<Map<String, Object>> tests = (List<Map<String, Object>>) graded.results.get("tests");
-        List<Map<String, Object>> stopped = tests.stream().filter(t -> ((String) t.get("output")).contains("grading stopped at its time limit"))
-                .collect(Collectors.toList());
-        assertTrue("the last task's tests are stopped", stopped.stream().anyMatch(t -> ((String) t.get("name")).startsWith("Task 6 ")));
-        for (Map<String, Object> t : stopped) {
-            assertEquals(t.get("name") + " earns nothing", 0.0, ((Number) t.get("score")).doubleValue(), 0);
-        }
-        double earned = tests.stream().mapToDouble(t -> ((Number) t.get("score")).doubleValue()).sum();
-        assertEquals(earned, ((Number) graded.results.get("score")).doubleValue(), 1e-9);
-        assertTrue("points earned before the limit count", earned > 0);
-        for (int task = 1; task <= 6; task++) {
-            String prefix = "Task " + task + " ";
-            assertTrue("task " + task + "'s tests are listed", tests.stream().anyMatch(t -> ((String) t.get("name")).startsWith(prefix)));
-        }
-        assertTrue(graded.seconds + " s", graded.seconds < limit + 20);
-        record("tasks 2-6 never finish, 25 s time limit", graded, "no");
-    }
-
-    private static Graded grade(String name, Map<String, UnaryOperator<String>> edits, Path platformResults, String... options)
-            throws Exception {
-        Path submission = FOLDER.getRoot().toPath().resolve("submission-" + name);
-        Files.createDirectories(submission);
-        for (String file : StudentFiles.in(project).keySet()) {
-            String source = Files.readString(project.resolve(file), StandardCharsets.UTF_8);
-            source = edits.getOrDefault(file, UnaryOperator.identity()).apply(source);
-            Files.writeString(submission.resolve(Path.of(file).getFileName().toString()), source, StandardCharsets.UTF_8);
-        }
-        Path out = FOLDER.getRoot().toPath().resolve("grade-" + name);
-        List<String> args = new ArrayList<>(List.of("--project", project.toString(), "--classpath", LIBRARIES,
-                "--submission", submission.toString(), "--out", out.toString()));
-        if (platformResults != null) {
-            args.addAll(List.of("--results", platformResults.toString()));
-        }
-        args.addAll(List.of(options));
-        long start = System.nanoTime();
-        assertEquals(0, new CommandLine(new Grader()).execute(args.toArray(new String[0])));
-        Graded graded = new Graded();
-        graded.seconds = (System.nanoTime() - start) / 1e9;
-        graded.resultsFile = out.resolve("results.json");
-        graded.json = Files.readString(graded.resultsFile, StandardCharsets.UTF_8);
-        graded.bytes = Files.size(graded.resultsFile);
-        graded.results = readJson(graded.json);
-        // Kept beside the summary, to read what each attack got.
-        Files.createDirectories(SUMMARY.getParent());
-        Files.writeString(SUMMARY.resolveSibling(name + "-results.json"), graded.json, StandardCharsets.UTF_8);
-        assertTrue(graded.bytes + " bytes", graded.bytes <= OutputLimits.RESULTS_BYTES);
-        return graded;
-    }
-
-    @SuppressWarnings("unchecked")
-    private static Map<String, Object> readJson(String json) {
-        return new Gson().fromJson(json, Map.class);
+        assertTrue(graded.seconds + " s", graded.seconds < seconds);
+        assertEquals("no process of a student user is left", List.of(), studentProcesses());
+        record(attack, graded, "no");
     }
 
     @SuppressWarnings("unchecked")
@@ -304,40 +565,10 @@ public class AdversarialSubmissionsTest {
         }
     }
 
-    private static long studentProcesses() {
-        return ProcessHandle.allProcesses().filter(p -> p.info().user().map(Sandbox.USER::equals).orElse(false)).count();
-    }
-
-    /** Graded within {@code seconds}, with no process of the student's user left; recorded as {@code submission}. */
-    private static void withinAndClean(Graded graded, double seconds, String submission) throws Exception {
-        assertTrue(graded.seconds + " s", graded.seconds < seconds);
-        assertEquals("no process of the student's user is left", 0, studentProcesses());
-        record(submission, graded, "no");
-    }
-
-    /** TRUE when every test named so passes, FALSE when none does, null when some do. */
-    private static Boolean passing(List<Map<String, Object>> tests, java.util.function.Predicate<String> named) {
-        List<Boolean> passed = tests.stream().filter(t -> named.test((String) t.get("name"))).map(t -> "passed".equals(t.get("status")))
-                .distinct().collect(Collectors.toList());
-        return passed.size() == 1 ? passed.get(0) : null;
-    }
-
-    /** The class with a static initializer that never ends. */
-    private static String loopingStaticInitializer(String source) {
-        return source.replaceFirst("(public class [^{]*\\{\n)",
-                "$1    static {\n        while (System.nanoTime() != 0) {\n            Thread.onSpinWait();\n        }\n    }\n");
-    }
-
-    private static String insertAfter(String source, String anchor, String inserted) {
-        int at = source.indexOf(anchor);
-        assertTrue("anchor not found: " + anchor, at >= 0);
-        return source.substring(0, at + anchor.length()) + inserted + source.substring(at + anchor.length());
-    }
-
-    private static synchronized void record(String submission, Graded graded, String leak) throws Exception {
+    private static synchronized void record(String attack, Graded graded, String leak) throws Exception {
         Files.createDirectories(SUMMARY.getParent());
-        String line = String.format("%-48s score %6.1f  %8d bytes  leak %-3s  %6.1f s%n", submission,
-                ((Number) graded.results.get("score")).doubleValue(), graded.bytes, leak, graded.seconds);
+        String line = String.format("%-56s score %6.1f  %8d bytes  leak %-3s  %6.1f s%n", attack, graded.score(), graded.bytes, leak,
+                graded.seconds);
         Files.writeString(SUMMARY, line, StandardCharsets.UTF_8, StandardOpenOption.CREATE, StandardOpenOption.APPEND);
     }
 }

@@ -4,15 +4,11 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
 import com.google.gson.Gson;
-import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
-import java.util.Enumeration;
 import java.util.List;
 import java.util.Map;
-import org.apache.commons.compress.archivers.zip.ZipArchiveEntry;
-import org.apache.commons.compress.archivers.zip.ZipFile;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
@@ -34,7 +30,7 @@ public class AutograderBundleTest {
         Path zip = FOLDER.getRoot().toPath().resolve("ray1-gradescope.zip");
         KitInputs kit = new KitInputs();
         AutograderBundle.build(Path.of("."), zip, kit.classes, kit.libraries);
-        unpack(zip, root.resolve("source"));
+        KitInputs.unpack(zip, root.resolve("source"));
         assertEquals("rwxr-xr-x", PosixFilePermissions.toString(Files.getPosixFilePermissions(root.resolve("source/run_autograder"))));
         assertEquals("rwxr-xr-x", PosixFilePermissions.toString(Files.getPosixFilePermissions(root.resolve("source/setup.sh"))));
         assertTrue(Files.readString(root.resolve("source/run_autograder")).startsWith("#!/usr/bin/env bash\n"));
@@ -59,32 +55,5 @@ public class AutograderBundleTest {
             assertTrue("task " + task + " has points", possible[task] > 0);
             assertEquals("task " + task + " keeps its points", possible[task], regular[task], 0);
         }
-    }
-
-    /** Unzips with each entry's Unix mode, as Gradescope's unzip keeps it. */
-    private static void unpack(Path zip, Path target) throws Exception {
-        try (ZipFile file = ZipFile.builder().setPath(zip).get()) {
-            Enumeration<ZipArchiveEntry> entries = file.getEntries();
-            while (entries.hasMoreElements()) {
-                ZipArchiveEntry entry = entries.nextElement();
-                Path out = target.resolve(entry.getName());
-                Files.createDirectories(out.getParent());
-                try (InputStream in = file.getInputStream(entry)) {
-                    Files.copy(in, out);
-                }
-                if (entry.getUnixMode() != 0) {
-                    Files.setPosixFilePermissions(out, PosixFilePermissions.fromString(modeString(entry.getUnixMode() & 0777)));
-                }
-            }
-        }
-    }
-
-    private static String modeString(int mode) {
-        StringBuilder s = new StringBuilder();
-        for (int shift = 6; shift >= 0; shift -= 3) {
-            int bits = (mode >> shift) & 7;
-            s.append((bits & 4) != 0 ? 'r' : '-').append((bits & 2) != 0 ? 'w' : '-').append((bits & 1) != 0 ? 'x' : '-');
-        }
-        return s.toString();
     }
 }

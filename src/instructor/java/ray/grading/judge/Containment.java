@@ -3,6 +3,7 @@ package ray.grading.judge;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -10,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
+import java.util.stream.Stream;
 
 /**
  * How the judge starts a worker and ends it with everything it started, as the grader set it up
@@ -79,7 +81,11 @@ public final class Containment {
         env.putAll(environment);
     }
 
-    /** Ends the worker's process, its descendants, and every process of the worker's user. */
+    /**
+     * Ends the worker's process, its descendants, and every process of the worker's user; then removes
+     * what the user wrote, so that the next worker (another task's, or this one's after a restart)
+     * finds nothing of this one's.
+     */
     void end(Process process) {
         List<ProcessHandle> tree = process.descendants().collect(Collectors.toList());
         process.destroyForcibly();
@@ -90,6 +96,55 @@ public final class Containment {
             Thread.currentThread().interrupt();
         }
         endUsersProcesses();
+        removeUsersFiles();
+    }
+
+    /**
+     * Empties the worker's home and temporary folder, and removes what the worker's user made in the
+     * folders everyone may write (/tmp, /var/tmp, /dev/shm); nothing without a user of its own.
+     */
+    public void removeUsersFiles() {
+        if (user == null) {
+            return;
+        }
+        List<Path> own = new ArrayList<>();
+        for (String variable : List.of("HOME", "TMPDIR")) {
+            if (environment.containsKey(variable)) {
+                own.add(Path.of(environment.get(variable)));
+            }
+        }
+        for (Path folder : own) {
+            removeEntries(folder, entry -> true);
+        }
+        for (String shared : List.of(System.getProperty("java.io.tmpdir"), "/tmp", "/var/tmp", "/dev/shm")) {
+            removeEntries(Path.of(shared), entry -> {
+                try {
+                    return Files.getOwner(entry, LinkOption.NOFOLLOW_LINKS).getName().equals(user);
+                } catch (IOException e) {
+                    return false;
+                }
+            });
+        }
+    }
+
+    /** Removes the entries of {@code folder} that {@code which} accepts, folders with all in them; a link itself, never what it points to. */
+    private static void removeEntries(Path folder, java.util.function.Predicate<Path> which) {
+        if (!Files.isDirectory(folder, LinkOption.NOFOLLOW_LINKS)) {
+            return;
+        }
+        try (Stream<Path> entries = Files.list(folder)) {
+            for (Path entry : entries.filter(which).collect(Collectors.toList())) {
+                try (Stream<Path> walk = Files.walk(entry)) {
+                    for (Path p : (Iterable<Path>) walk.sorted(java.util.Comparator.reverseOrder())::iterator) {
+                        Files.deleteIfExists(p);
+                    }
+                } catch (IOException | java.io.UncheckedIOException e) {
+                    // Gone already, or not removable: no grade depends on it.
+                }
+            }
+        } catch (IOException e) {
+            // Not listable: nothing of the grade depends on it.
+        }
     }
 
     /** Every process of the worker's user, ended (a detached or stopped one too); none when there is no such user. */
