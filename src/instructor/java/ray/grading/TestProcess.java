@@ -181,6 +181,7 @@ public final class TestProcess {
             }
             // A file per JVM, so that each attempt's unfinished test is told apart from earlier ones.
             Path events = eventsFile(String.valueOf(attempt));
+            int resultsBefore = results.size();
             Process child = launch(events, task, skip, false, unfinished(results.values()));
             boolean finished = watch(child, events);
             Map<String, Map<String, Object>> started = new LinkedHashMap<>();
@@ -231,10 +232,11 @@ public final class TestProcess {
                         : "the test JVM crashed during this test (exit code " + child.exitValue() + ")";
                 results.put(open.getKey(), outcome(open.getValue(), false, why));
             }
-            if (started.isEmpty()) {
+            if (started.isEmpty() && results.size() == resultsBefore) {
                 throw new IllegalStateException("the test JVM ended without running a test (exit code "
                         + child.exitValue() + "); see " + workDir.resolve("test-output.txt"));
             }
+            // Ended (or stopped) between tests, or during one: the next JVM runs the tests left.
             skip.addAll(results.keySet());
         }
         throw new IllegalStateException("gave up after " + MAX_RESTARTS + " restarts of the test JVM");

@@ -27,16 +27,18 @@ public class MistakeEvidenceTest {
     public final TemporaryFolder folder = new TemporaryFolder();
 
     private static final Path PROJECT = Path.of(".").toAbsolutePath().normalize();
-    /** The solution's classes and the libraries, as the tests run with them. */
-    private static final String CLASSPATH = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
-            .collect(Collectors.joining(File.pathSeparator));
+    /** The libraries, as the tests run with them. */
+    private static final String LIBRARIES = Stream.of(System.getProperty("java.class.path").split(File.pathSeparator))
+            .filter(p -> p.endsWith(".jar")).collect(Collectors.joining(File.pathSeparator));
 
     @Test(timeout = 300_000)
     public void eachMistakeRendersEachSceneOnceForTheClass() throws Exception {
         Map<String, Integer> studentFiles = StudentFiles.in(PROJECT);
         Variant farRoot = VariantFolders.in(PROJECT, studentFiles).stream()
                 .filter(v -> v.folder.getFileName().toString().equals("sphere-far-root")).findFirst().orElseThrow();
-        MistakeEvidence renders = new MistakeEvidence(PROJECT, CLASSPATH);
+        // The class's compiled tree, which the mistakes run in.
+        CompiledTree tree = CompiledTree.build(PROJECT, folder.getRoot().toPath().resolve("compiled"), LIBRARIES);
+        MistakeEvidence renders = new MistakeEvidence(tree.root(), LIBRARIES);
         // The grading's tree does not even exist: the mistake renders in the project it was given.
         Path gradingTree = folder.getRoot().toPath().resolve("no-such-tree");
         Path first = folder.getRoot().toPath().resolve("first");

@@ -67,19 +67,35 @@ public final class StudentTaskRule implements TestRule {
                 } catch (AssertionError e) {
                     throw explained(label, e.getMessage(), e);
                 } catch (org.junit.runners.model.TestTimedOutException e) {
-                    UnfinishedTasks.didNotFinish(task, bonus, test);
-                    throw explained(label, "took longer than " + seconds + " s: is there a loop that never ends?", e);
+                    throw timedOut(label, bonus, test, e);
+                } catch (org.junit.runners.model.MultipleFailureException e) {
+                    // A time-out together with the threads JUnit found stuck (ones the code started): still a time-out.
+                    if (e.getFailures().stream().anyMatch(f -> f instanceof org.junit.runners.model.TestTimedOutException)) {
+                        throw timedOut(label, bonus, test, e);
+                    }
+                    throw thrown(e, bonus);
                 } catch (Exception | VirtualMachineError | LinkageError e) {
-                    // Reported under the task whose file threw it, whichever task's test ran it (a
-                    // render test runs several), with a first line that does not depend on the test:
-                    // the summary then names one exception once (gradle/test-report.gradle).
-                    StudentTask thrower = StudentFrames.taskWhoseFileThrew(e instanceof ExceptionInInitializerError && e.getCause() != null ? e.getCause() : e);
-                    StudentTask blamed = thrower == null ? task : thrower;
-                    String blamedLabel = labelOf(blamed, bonus);
-                    throw explained(blamedLabel, whatWentWrong(e), e, blamed);
+                    throw thrown(e, bonus);
                 }
             }
         };
+    }
+
+    /**
+     * The failure of a test whose code threw {@code e}: reported under the task whose file threw it,
+     * whichever task's test ran it (a render test runs several), with a first line that does not
+     * depend on the test: the summary then names one exception once (gradle/test-report.gradle).
+     */
+    private AssertionError thrown(Throwable e, boolean bonus) {
+        StudentTask thrower = StudentFrames.taskWhoseFileThrew(e instanceof ExceptionInInitializerError && e.getCause() != null ? e.getCause() : e);
+        StudentTask blamed = thrower == null ? task : thrower;
+        return explained(labelOf(blamed, bonus), whatWentWrong(e), e, blamed);
+    }
+
+    /** The failure of a test that ran out of time; the task's later tests are skipped when grading ({@link UnfinishedTasks}). */
+    private AssertionError timedOut(String label, boolean bonus, String test, Exception e) {
+        UnfinishedTasks.didNotFinish(task, bonus, test);
+        return explained(label, "took longer than " + seconds + " s: is there a loop that never ends?", e);
     }
 
     /** "[Task 2 (Sphere)] " or "[Task 2 (Sphere), bonus] ", which starts a failure's message. */

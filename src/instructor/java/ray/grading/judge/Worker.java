@@ -36,7 +36,8 @@ final class Worker {
 
     private final Containment containment;
     private final JudgeObjects objects = new JudgeObjects(new Certification());
-    private WorkerProcess process;
+    /** The running worker; read without the lock only to kill it ({@link #kill}). */
+    private volatile WorkerProcess process;
 
     private Worker(Containment containment) {
         this.containment = containment;
@@ -64,6 +65,8 @@ final class Worker {
     /** Another task is graded: its own worker (with its own classes) starts when first asked; the last one ends. */
     static synchronized void taskChanged(int newTask) {
         if (current != null) {
+            // Killed first: a test abandoned at its time limit may still wait for the worker, holding its lock.
+            current.kill();
             current.end();
             current = null;
         }
@@ -81,7 +84,16 @@ final class Worker {
     /** Ends the worker, if this judge ever started one. */
     static synchronized void stopIfStarted() {
         if (current != null) {
+            current.kill();
             current.end();
+        }
+    }
+
+    /** Stops the running worker's process at once, without the lock a waiting call holds; that call then fails. */
+    private void kill() {
+        WorkerProcess running = process;
+        if (running != null) {
+            running.kill();
         }
     }
 
@@ -148,17 +160,10 @@ final class Worker {
      */
     synchronized Object sendBatches(List<WireOut> messages) {
         ensureStarted();
-        WorkerProcess target = process;
         for (WireOut message : messages) {
-            writer.execute(() -> {
-                try {
-                    target.send(Protocol.BATCH, message);
-                } catch (WorkerFailure e) {
-                    // The worker is gone: the wait for its answer says so.
-                }
-            });
+            process.send(Protocol.BATCH, message);
         }
-        return target;
+        return process;
     }
 
     /**
@@ -190,13 +195,6 @@ final class Worker {
             throw new WorkerFailure(WorkerFailure.Kind.TIMED_OUT, "interrupted while your code ran (the test's time limit)");
         }
     }
-
-    /** Writes batches to the worker, one after another, while the judge goes on. */
-    private final java.util.concurrent.ExecutorService writer = java.util.concurrent.Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "ray1-batch-writer");
-        t.setDaemon(true);
-        return t;
-    });
 
     /** The worker's message of {@code type}, serving its callbacks until it comes. */
     private WireIn await(int type) throws InterruptedException {

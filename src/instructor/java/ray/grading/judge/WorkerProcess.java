@@ -8,6 +8,9 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import ray.grading.wire.Frames;
@@ -32,16 +35,19 @@ final class WorkerProcess {
     private final BlockingQueue<Object> fromWorker = new LinkedBlockingQueue<>();
     private final Containment containment;
     private final StringBuilder printed = new StringBuilder();
+    /**
+     * Writes to the worker, one message after another: a caller never blocks on the pipe (a worker
+     * that stopped reading fills it), so that a test's time limit can always end its wait.
+     */
+    private final ExecutorService writer = Executors.newSingleThreadExecutor(r -> JudgeThreads.daemon(r, "ray1-worker-writer"));
 
     private WorkerProcess(Process process, Containment containment) {
         this.process = process;
         this.containment = containment;
         this.toWorker = new BufferedOutputStream(process.getOutputStream(), 1 << 16);
-        Thread reader = new Thread(this::readFrames, "ray1-worker-reader");
-        reader.setDaemon(true);
+        Thread reader = JudgeThreads.daemon(this::readFrames, "ray1-worker-reader");
         reader.start();
-        Thread drain = new Thread(this::drainPrinted, "ray1-worker-printed");
-        drain.setDaemon(true);
+        Thread drain = JudgeThreads.daemon(this::drainPrinted, "ray1-worker-printed");
         drain.start();
     }
 
@@ -113,11 +119,18 @@ final class WorkerProcess {
         }
     }
 
+    /** Sends {@code message} (which nothing may change from here on) after those sent before, without waiting for the pipe. */
     void send(int type, WireOut message) {
         try {
-            message.send(toWorker, type);
-        } catch (IOException e) {
-            throw new WorkerFailure("the worker stopped reading (" + e.getMessage() + ")");
+            writer.execute(() -> {
+                try {
+                    message.send(toWorker, type);
+                } catch (IOException e) {
+                    // The worker ended or stopped reading: the wait for its answer says so.
+                }
+            });
+        } catch (RejectedExecutionException e) {
+            throw new WorkerFailure(WorkerFailure.Kind.ENDED, "the JVM running your code ended before it answered");
         }
     }
 
@@ -165,13 +178,21 @@ final class WorkerProcess {
         return process.isAlive();
     }
 
+    /** Stops the worker's process at once, from any thread: whoever waits for it learns that it ended. */
+    void kill() {
+        process.descendants().forEach(ProcessHandle::destroyForcibly);
+        process.destroyForcibly();
+    }
+
     /** Ends the worker and everything it started. */
     void end() {
+        // The process first: a write blocked on its full pipe then fails, rather than the close waiting for it.
+        containment.end(process);
+        writer.shutdownNow();
         try {
-            toWorker.close();
+            process.getOutputStream().close();
         } catch (IOException e) {
             // Gone already.
         }
-        containment.end(process);
     }
 }

@@ -53,6 +53,23 @@ public final class ThrownData {
                 message == null ? null : cut(message, Protocol.MAX_MESSAGE_BYTES / 4), frames, cause);
     }
 
+    /** Characters of the message a brief one keeps. */
+    private static final int BRIEF_MESSAGE_CHARS = 200;
+
+    /** The same throwable in brief: its class and the start of its message, without frames or cause. */
+    public ThrownData brief() {
+        return new ThrownData(className, message == null ? null : cut(message, BRIEF_MESSAGE_CHARS), List.of(), null);
+    }
+
+    /** About how many bytes {@link #write} writes (at most four per character). */
+    public long estimatedBytes() {
+        long bytes = 16L + 4L * (className.length() + (message == null ? 0 : message.length()));
+        for (StackTraceElement f : frames) {
+            bytes += 16L + 4L * (f.getClassName().length() + f.getMethodName().length() + (f.getFileName() == null ? 0 : f.getFileName().length()));
+        }
+        return bytes + (cause == null ? 0 : cause.estimatedBytes());
+    }
+
     /** At most {@code chars} characters, so that the UTF-8 bytes stay within four times that. */
     private static String cut(String s, int chars) {
         return s.length() <= chars ? s : s.substring(0, chars);

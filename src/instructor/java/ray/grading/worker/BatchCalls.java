@@ -147,6 +147,7 @@ final class BatchCalls {
     private long evaluated;
 
     private WireOut answerTimed(WireIn in) {
+        thrownBytesLeft = THROWN_BYTES;
         objects.define(in);
         objects.settle();
         int rayCount = in.count(Protocol.MAX_ENTRIES, "rays");
@@ -273,6 +274,24 @@ final class BatchCalls {
             calls.add(new UvCall(in.i32(), in.f64(), in.f64()));
         }
         return calls;
+    }
+
+    /**
+     * Bytes of whole throwables one answer carries at most; later ones go in brief. Code that throws on
+     * every call of a render (a static initializer that failed) would otherwise fill an answer past
+     * what a frame may hold, and the first throwables are what the render reports.
+     */
+    private static final long THROWN_BYTES = 4 << 20;
+    private long thrownBytesLeft;
+
+    /** What {@code t} is, as the judge is told: whole while this answer has room for it, then in brief. */
+    private ThrownData thrown(Throwable t) {
+        ThrownData data = WorkerCalls.thrownData(t);
+        if (thrownBytesLeft <= 0) {
+            return data.brief();
+        }
+        thrownBytesLeft -= data.estimatedBytes();
+        return data;
     }
 
     /** A target not run on an added candidate: it comes before the hit the candidate follows, and the search never asks it so. */
@@ -425,21 +444,21 @@ final class BatchCalls {
                 boolean hit = target.intersect(out, ray);
                 answer = Answer.returned(hit, candidate.before, out, key.start, candidate.end, ray);
             } catch (Throwable t) { // whatever the student's code throws is its answer
-                answer = Answer.threw(WorkerCalls.thrownData(t));
+                answer = Answer.threw(thrown(t));
             }
             return running.guessed ? null : answer;
         }
     }
 
     /** Whether anything of the target lies on the ray's segment (a shadow ray's question); what it needed, when it did. */
-    private static void anyHit(Running running, Surface target, Ray key, double end, WireOut out) {
+    private void anyHit(Running running, Surface target, Ray key, double end, WireOut out) {
         running.guessed = false;
         boolean hit;
         try {
             hit = target.intersectsAny(new Ray(key.origin, key.direction, key.start, end));
         } catch (Throwable t) { // whatever the student's code throws is its answer
             out.u8(Protocol.THREW);
-            WorkerCalls.thrownData(t).write(out);
+            thrown(t).write(out);
             return;
         }
         if (running.guessed) {
@@ -467,7 +486,7 @@ final class BatchCalls {
                 ray = objects.twin(handle, Camera.class).generateRay(u, v);
             } catch (Throwable t) {
                 out.u8(Protocol.THREW);
-                WorkerCalls.thrownData(t).write(out);
+                thrown(t).write(out);
                 return;
             }
             out.u8(Protocol.RETURNED);
@@ -480,7 +499,7 @@ final class BatchCalls {
                 color = objects.twin(handle, Texture.class).getTexColor(u, v);
             } catch (Throwable t) {
                 out.u8(Protocol.THREW);
-                WorkerCalls.thrownData(t).write(out);
+                thrown(t).write(out);
                 return;
             }
             out.u8(Protocol.RETURNED).vec(color);
