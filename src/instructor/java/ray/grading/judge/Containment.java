@@ -87,9 +87,7 @@ public final class Containment {
      * finds nothing of this one's.
      */
     void end(Process process) {
-        List<ProcessHandle> tree = process.descendants().collect(Collectors.toList());
-        process.destroyForcibly();
-        tree.forEach(ProcessHandle::destroyForcibly);
+        kill(process);
         try {
             process.waitFor(5, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
@@ -97,6 +95,19 @@ public final class Containment {
         }
         endUsersProcesses();
         removeUsersFiles();
+    }
+
+    /**
+     * Kills the worker's process and its descendants at once, from any thread. The descendants first,
+     * while they are still known as such: the worker proper runs under the commands that set it up
+     * (unshare, setpriv), which do not take it along when they die. By the process's handle, never by
+     * {@link Process#destroyForcibly}, which also closes the pipe to the worker and waits for whoever
+     * writes to it.
+     */
+    static void kill(Process process) {
+        List<ProcessHandle> tree = process.descendants().collect(Collectors.toList());
+        tree.forEach(ProcessHandle::destroyForcibly);
+        process.toHandle().destroyForcibly();
     }
 
     /**

@@ -29,6 +29,8 @@ import ray.grading.worker.WorkerMain;
 final class WorkerProcess {
     /** What the student's code printed that is kept (the rest is dropped). */
     private static final int KEPT_OUTPUT_BYTES = 64 << 10;
+    /** How often a wait for the worker looks whether it still runs. */
+    private static final long ALIVE_CHECK_NANOS = TimeUnit.MILLISECONDS.toNanos(200);
 
     private final Process process;
     private final OutputStream toWorker;
@@ -141,10 +143,20 @@ final class WorkerProcess {
      * @throws InterruptedException when the waiting thread is interrupted (a test's time limit)
      */
     Frames.Frame next(long deadline) throws InterruptedException {
-        long wait = deadline - System.nanoTime();
-        Object next = wait <= 0 ? fromWorker.poll() : fromWorker.poll(wait, TimeUnit.NANOSECONDS);
-        if (next == null) {
-            throw new WorkerFailure(WorkerFailure.Kind.TIMED_OUT, "the worker gave no answer in time");
+        Object next = fromWorker.poll();
+        while (next == null) {
+            long wait = deadline - System.nanoTime();
+            if (wait <= 0) {
+                throw new WorkerFailure(WorkerFailure.Kind.TIMED_OUT, "the worker gave no answer in time");
+            }
+            // In slices: a worker that ended says so even when a process it started keeps its output open.
+            next = fromWorker.poll(Math.min(wait, ALIVE_CHECK_NANOS), TimeUnit.NANOSECONDS);
+            if (next == null && !process.isAlive()) {
+                next = fromWorker.poll(ALIVE_CHECK_NANOS, TimeUnit.NANOSECONDS);
+                if (next == null) {
+                    throw new WorkerFailure(WorkerFailure.Kind.ENDED, endedWhy());
+                }
+            }
         }
         if (next instanceof Frames.Frame) {
             Frames.Frame frame = (Frames.Frame) next;
@@ -180,8 +192,7 @@ final class WorkerProcess {
 
     /** Stops the worker's process at once, from any thread: whoever waits for it learns that it ended. */
     void kill() {
-        process.descendants().forEach(ProcessHandle::destroyForcibly);
-        process.destroyForcibly();
+        Containment.kill(process);
     }
 
     /** Ends the worker and everything it started. */
@@ -189,10 +200,14 @@ final class WorkerProcess {
         // The process first: a write blocked on its full pipe then fails, rather than the close waiting for it.
         containment.end(process);
         writer.shutdownNow();
-        try {
-            process.getOutputStream().close();
-        } catch (IOException e) {
-            // Gone already.
-        }
+        // Closed aside: a process the student's code started may have kept the pipe's other end (with its
+        // standard input inherited), and then a write, and the close after it, wait for as long as it lives.
+        JudgeThreads.daemon(() -> {
+            try {
+                process.getOutputStream().close();
+            } catch (IOException e) {
+                // Gone already.
+            }
+        }, "ray1-worker-close").start();
     }
 }
