@@ -146,7 +146,7 @@ public final class Grader implements Callable<Integer> {
             if (sandbox != null) {
                 sandbox.close();
             }
-            if (work != null && !Boolean.getBoolean("ray1.keepWork")) {
+            if (work != null) {
                 ProjectTree.deleteRecursively(work);
             }
         }
@@ -218,11 +218,7 @@ public final class Grader implements Callable<Integer> {
                 overlay.put(missing, stub);
             }
         }
-        long treeStart = System.nanoTime();
         Path instructor = instructorTree();
-        if (Boolean.getBoolean("ray1.debugTimes")) {
-            System.err.printf("tree: %.2f s%n", (System.nanoTime() - treeStart) / 1e9);
-        }
         sandbox = Sandbox.create(GradingClasses.handout(instructor), !noIsolation, slot);
         if (sandbox.warning() != null) {
             System.err.println("warning: " + sandbox.warning());
@@ -260,7 +256,6 @@ public final class Grader implements Callable<Integer> {
                 judged.add(task);
             }
         }
-        debug("compiled the tasks");
         if (!judged.isEmpty()) {
             TestProcess tests = timed(new TestProcess(instructor, instructor.resolve("classes"), classpath, work.resolve("test-run"))
                     .judging(GradingClasses.standIns(instructor), workers));
@@ -276,11 +271,9 @@ public final class Grader implements Callable<Integer> {
                 // Nothing of the student's outlives the tests.
                 sandbox.endStrayProcesses();
             }
-            debug("judged");
             for (int task : judged) {
                 byTask.putIfAbsent(task, judged(task, ran));
             }
-            debug("listed");
         }
         List<TestOutcome> outcomes = new ArrayList<>();
         for (Map.Entry<Integer, List<TestOutcome>> task : byTask.entrySet()) {
@@ -290,14 +283,6 @@ public final class Grader implements Callable<Integer> {
             }
         }
         return outcomes;
-    }
-
-    private final long started = System.nanoTime();
-
-    private void debug(String what) {
-        if (Boolean.getBoolean("ray1.debugTimes")) {
-            System.err.printf("%.2f s: %s%n", (System.nanoTime() - started) / 1e9, what);
-        }
     }
 
     /** One task's compilation: its files copied to task-N, compiled against the handout into task-N/classes. */

@@ -301,10 +301,6 @@ public final class TestProcess {
             // Checking a whole tree (the ungraded tests too) runs long tests: those keep the defaults.
             command.addAll(1, SHORT_LIVED_JVM);
         }
-        if (Boolean.getBoolean("ray1.debugTimes")) {
-            command.add("-Dray1.debugTimes=true");
-            command.add("-Dray1.debugRounds=true");
-        }
         if (workerSetup != null && !listOnly) {
             command.add("-D" + ray.grading.judge.Judge.WORKER_PROPERTY + "=" + workerSetup);
             if (deadlineMillis > 0) {

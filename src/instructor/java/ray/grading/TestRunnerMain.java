@@ -378,9 +378,6 @@ public final class TestRunnerMain {
             e.put("message", OutputLimits.cut(failures.getOrDefault(id, ""), OutputLimits.MESSAGE_CHARS));
             e.put("seconds", (System.nanoTime() - started.getOrDefault(id, System.nanoTime())) / 1e9);
             write(e);
-            if (Boolean.getBoolean("ray1.debugTimes")) {
-                System.err.printf("  %s: %.2f s%n", id, e.get("seconds"));
-            }
             running = null;
         }
     }

@@ -18,32 +18,62 @@ import java.nio.file.attribute.PosixFilePermissions;
  * however it ends.
  */
 final class UserClaim implements AutoCloseable {
-    /** Where the lock files are: a folder of root's own (mode 700), made anew if anyone else made it. */
-    private static final Path FOLDER = Path.of(System.getProperty("java.io.tmpdir"), "ray1-grading-users");
+    /**
+     * Where the lock files are: a folder of root's own (mode 700), made anew if anyone else made it; the
+     * same for every grader on the machine, whatever its java.io.tmpdir (Gradle gives its tests their own).
+     */
+    static final Path FOLDER = Path.of("/tmp", "ray1-grading-users");
 
+    /** The users this JVM's gradings hold. */
+    private static final java.util.Set<String> HELD_HERE = new java.util.HashSet<>();
+
+    private final String user;
     private final FileChannel channel;
     private final FileLock lock;
 
-    private UserClaim(FileChannel channel, FileLock lock) {
+    private UserClaim(String user, FileChannel channel, FileLock lock) {
+        this.user = user;
         this.channel = channel;
         this.lock = lock;
     }
 
     /** The claim on {@code user}, or null while another grading holds it. */
     static UserClaim tryClaim(String user) throws IOException {
-        Path folder = privateFolder();
-        FileChannel channel = FileChannel.open(folder.resolve(user + ".lock"), StandardOpenOption.CREATE, StandardOpenOption.WRITE,
-                LinkOption.NOFOLLOW_LINKS);
+        synchronized (HELD_HERE) {
+            // Another grading of this JVM holds it: asked before the file, since closing any channel to a
+            // locked file would release this JVM's lock on it.
+            if (!HELD_HERE.add(user)) {
+                return null;
+            }
+        }
+        FileChannel channel = null;
         try {
+            channel = FileChannel.open(privateFolder().resolve(user + ".lock"), StandardOpenOption.CREATE, StandardOpenOption.WRITE,
+                    LinkOption.NOFOLLOW_LINKS);
             FileLock lock = channel.tryLock();
             if (lock != null) {
-                return new UserClaim(channel, lock);
+                return new UserClaim(user, channel, lock);
             }
         } catch (OverlappingFileLockException e) {
-            // Held by another grading in this JVM.
+            // Cannot happen (this JVM's claims are in HELD_HERE); treated as held.
+        } catch (IOException | RuntimeException e) {
+            release(user, channel);
+            throw e;
         }
-        channel.close();
+        release(user, channel);
         return null;
+    }
+
+    private static void release(String user, FileChannel channel) throws IOException {
+        try {
+            if (channel != null) {
+                channel.close();
+            }
+        } finally {
+            synchronized (HELD_HERE) {
+                HELD_HERE.remove(user);
+            }
+        }
     }
 
     /**
@@ -80,7 +110,7 @@ final class UserClaim implements AutoCloseable {
         try {
             lock.release();
         } finally {
-            channel.close();
+            release(user, channel);
         }
     }
 }

@@ -16,14 +16,15 @@ import ray.Ray;
  * questions used in a run are the next run's log.
  */
 final class Computation {
-    /** Logs longer than this are looked up by hash when a call leaves their order; shorter ones by a scan. */
-    private static final int SCANNED = 256;
+    /** Logs and pools longer than this are looked up by hash when a call leaves the log's order; shorter ones by a scan. */
+    private static final int SCANNED = 16;
 
     List<Question> log = new ArrayList<>();
-    final List<Question> pool = new ArrayList<>(0);
+    private final List<Question> pool = new ArrayList<>(0);
     private List<Question> next = new ArrayList<>();
     private int cursor;
     private Map<Integer, List<Question>> index;
+    private Map<Integer, List<Question>> poolIndex;
     /** This run used a question without an answer. */
     boolean guessed;
     /** This run asked a question not sent yet: the next batch takes it. */
@@ -61,7 +62,7 @@ final class Computation {
                 return used(q);
             }
         }
-        for (Question q : pool) {
+        for (Question q : pooled(hash)) {
             if (q.matchesIntersect(target, ray, out)) {
                 return used(q);
             }
@@ -105,6 +106,28 @@ final class Computation {
             }
         }
         return index.getOrDefault(hash, List.of());
+    }
+
+    /** Keeps an answer the worker gave unasked (what a search asks next), for a later run's call to find. */
+    void pool(Question answered) {
+        pool.add(answered);
+        if (poolIndex != null) {
+            poolIndex.computeIfAbsent(answered.hash(), h -> new ArrayList<>(1)).add(answered);
+        }
+    }
+
+    /** The pool's answers that may match a call whose inputs hash to {@code hash}, as {@link #candidates} finds the log's. */
+    private List<Question> pooled(int hash) {
+        if (pool.size() <= SCANNED) {
+            return pool;
+        }
+        if (poolIndex == null) {
+            poolIndex = new HashMap<>();
+            for (Question q : pool) {
+                poolIndex.computeIfAbsent(q.hash(), h -> new ArrayList<>(1)).add(q);
+            }
+        }
+        return poolIndex.getOrDefault(hash, List.of());
     }
 
     private Question used(Question q) {

@@ -424,7 +424,7 @@ final class RoundBatch {
                     q.answer = answers[t][c];
                 } else if (g.targets.size() <= Batches.MAX_SEARCHED) {
                     // What a search asks next; a loop over hundreds of targets is no search, and its pool would be large.
-                    g.owner.pool.add(Question.answered(g.targets.get(t), g.ray.origin, g.ray.direction, g.ray.start, ends.get(c),
+                    g.owner.pool(Question.answered(g.targets.get(t), g.ray.origin, g.ray.direction, g.ray.start, ends.get(c),
                             befores.get(c), answers[t][c]));
                 }
             }

@@ -209,9 +209,6 @@ final class Rounds extends AnswerRounds {
         }
         batch.ask(Worker.get());
         unanswered.add(batch);
-        if (Boolean.getBoolean("ray1.debugRounds")) {
-            System.err.printf("asked: %s%n", batch);
-        }
         return batch;
     }
 

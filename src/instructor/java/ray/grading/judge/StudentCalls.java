@@ -88,21 +88,7 @@ public final class StudentCalls {
         if (rounds != null) {
             return rounds.generateRay((StandIn) self, u, v);
         }
-        Worker worker = Worker.get();
-        Outcome outcome = worker.call(m -> {
-            m.body.u8(Protocol.OP_GENERATE_RAY);
-            m.target((StandIn) self);
-            m.body.f64(u).f64(v);
-        }, in -> {
-            int status = in.u8();
-            if (status == Protocol.THREW) {
-                return Outcome.threw(ThrownData.read(in));
-            }
-            expect(status);
-            return Outcome.value(Records.readRayOrNull(in));
-        });
-        outcome.rethrow(self);
-        return (Ray) outcome.value;
+        return (Ray) uvCall(self, Protocol.OP_GENERATE_RAY, u, v, Records::readRayOrNull);
     }
 
     /** The student's {@code getTexColor(u, v)} on {@code self}'s twin. */
@@ -111,9 +97,13 @@ public final class StudentCalls {
         if (rounds != null) {
             return rounds.texColor((StandIn) self, u, v);
         }
-        Worker worker = Worker.get();
-        Outcome outcome = worker.call(m -> {
-            m.body.u8(Protocol.OP_TEX_COLOR);
+        return (Vec3) uvCall(self, Protocol.OP_TEX_COLOR, u, v, WireIn::vec);
+    }
+
+    /** A call {@code op}(u, v) on {@code self}'s twin, asked at once: what it returned, read by {@code value}, or what it threw, rethrown. */
+    private static Object uvCall(Object self, int op, double u, double v, java.util.function.Function<WireIn, Object> value) {
+        Outcome outcome = Worker.get().call(m -> {
+            m.body.u8(op);
             m.target((StandIn) self);
             m.body.f64(u).f64(v);
         }, in -> {
@@ -122,10 +112,10 @@ public final class StudentCalls {
                 return Outcome.threw(ThrownData.read(in));
             }
             expect(status);
-            return Outcome.value(in.vec());
+            return Outcome.value(value.apply(in));
         });
         outcome.rethrow(self);
-        return (Vec3) outcome.value;
+        return outcome.value;
     }
 
     private static void expect(int status) {

@@ -118,11 +118,7 @@ final class Worker {
                 end();
             }
             long deadline = Math.min(callDeadline(), System.nanoTime() + TimeUnit.SECONDS.toNanos(START_LIMIT_SECONDS));
-            long t0 = System.nanoTime();
             process = WorkerProcess.start(containment.command(), containment, deadline);
-            if (Boolean.getBoolean("ray1.debugTimes")) {
-                System.err.printf("worker started in %.2f s%n", (System.nanoTime() - t0) / 1e9);
-            }
         }
     }
 
@@ -133,11 +129,18 @@ final class Worker {
      */
     synchronized <T> T call(Consumer<JudgeObjects.Message> write, Function<WireIn, T> read) {
         ensureStarted();
-        try {
+        return answered(() -> {
             JudgeObjects.Message message = objects.new Message();
             write.accept(message);
             process.send(Protocol.CALL, message.assembled());
-            WireIn answer = await(Protocol.ANSWER);
+            return await(Protocol.ANSWER);
+        }, read);
+    }
+
+    /** An answer the worker owes, as {@code read} reads it whole; whatever goes wrong ends the worker and is a {@link WorkerFailure}. */
+    private <T> T answered(Answering answering, Function<WireIn, T> read) {
+        try {
+            WireIn answer = answering.answer();
             T result = read.apply(answer);
             answer.end();
             return result;
@@ -152,6 +155,11 @@ final class Worker {
             Thread.currentThread().interrupt();
             throw new WorkerFailure(WorkerFailure.Kind.TIMED_OUT, "interrupted while your code ran (the test's time limit)");
         }
+    }
+
+    /** Waits for an answer. */
+    private interface Answering {
+        WireIn answer() throws InterruptedException;
     }
 
     /**
@@ -174,26 +182,13 @@ final class Worker {
         if (process == null || process != sentTo) {
             throw new WorkerFailure(WorkerFailure.Kind.ENDED, "the JVM running your code ended before it answered");
         }
-        try {
+        return answered(() -> {
             Frames.Frame frame = process.next(callDeadline());
             if (frame.type != Protocol.BATCH_ANSWER) {
                 throw new WorkerFailure("the worker sent a message of type " + frame.type + " for a batch");
             }
-            WireIn answer = frame.reader();
-            T result = read.apply(answer);
-            answer.end();
-            return result;
-        } catch (WorkerFailure e) {
-            end();
-            throw e;
-        } catch (WireError e) {
-            end();
-            throw new WorkerFailure("the worker answered out of format (" + e.getMessage() + ")");
-        } catch (InterruptedException e) {
-            end();
-            Thread.currentThread().interrupt();
-            throw new WorkerFailure(WorkerFailure.Kind.TIMED_OUT, "interrupted while your code ran (the test's time limit)");
-        }
+            return frame.reader();
+        }, read);
     }
 
     /** The worker's message of {@code type}, serving its callbacks until it comes. */
@@ -243,12 +238,8 @@ final class Worker {
     /** Ends the worker and everything it started; the next call starts another. */
     synchronized void end() {
         if (process != null) {
-            long t0 = System.nanoTime();
             process.end();
             process = null;
-            if (Boolean.getBoolean("ray1.debugTimes")) {
-                System.err.printf("worker ended in %.2f s%n", (System.nanoTime() - t0) / 1e9);
-            }
         }
         objects.forget();
     }

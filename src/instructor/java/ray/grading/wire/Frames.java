@@ -57,7 +57,8 @@ public final class Frames {
         int length = (header[0] & 0xff) << 24 | (header[1] & 0xff) << 16 | (header[2] & 0xff) << 8 | header[3] & 0xff;
         if (length < 0 || length > MAX_FRAME_BYTES) {
             // Most likely text where a frame should be (something printed to the protocol's stream): show its start.
-            byte[] more = in.readNBytes(40);
+            // What has come already, without waiting for more (a sender that stops there is not waited for).
+            byte[] more = in.readNBytes(Math.min(40, in.available()));
             byte[] start = new byte[5 + more.length];
             start[0] = (byte) type;
             System.arraycopy(header, 0, start, 1, 4);

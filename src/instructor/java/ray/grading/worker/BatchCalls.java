@@ -134,19 +134,6 @@ final class BatchCalls {
 
     /** A BATCH message; its answer. */
     WireOut answer(WireIn in) {
-        long t0 = System.nanoTime();
-        WireOut result = answerTimed(in);
-        if (Boolean.getBoolean("ray1.debugWorker")) {
-            System.err.printf("worker batch: %.3f s (parse %.3f, evaluate %.3f)%n", (System.nanoTime() - t0) / 1e9, (parsed - t0) / 1e9,
-                    (evaluated - parsed) / 1e9);
-        }
-        return result;
-    }
-
-    private long parsed;
-    private long evaluated;
-
-    private WireOut answerTimed(WireIn in) {
         thrownBytesLeft = THROWN_BYTES;
         objects.define(in);
         objects.settle();
@@ -191,7 +178,6 @@ final class BatchCalls {
             running.exact.put(new Key(handle, ray, end, before), Answer.read(in, objects));
         }
         in.end();
-        parsed = System.nanoTime();
         WireOut answer = new WireOut();
         link.inBatch(running);
         try {
@@ -210,7 +196,6 @@ final class BatchCalls {
         } finally {
             link.inBatch(null);
         }
-        evaluated = System.nanoTime();
         answer.i32(running.neededBases.size());
         for (Key need : running.neededBases.keySet()) {
             answer.i32(need.handle);
