@@ -9,6 +9,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
@@ -122,13 +123,24 @@ final class MistakeEvidence {
         return home != null ? homeLibraries : libraries;
     }
 
-    /** The mistake's files compiled into {@code out}/classes (once), or null when they do not compile. */
-    /** The mistake's classes, compiled (once) against the handout's framework of {@code tree}; null when they do not compile. */
+    /**
+     * The mistake as a submission: its files and the solution's of every other student file, compiled
+     * (once) against the handout's framework of {@code tree}; null when they do not compile. The
+     * worker runs a task's classes from these alone, so a file of the task that the mistake leaves out
+     * (ClampTexture beside a wrong RepeatTexture) must be the solution's, not the handout's stub.
+     */
     private static synchronized Path compiled(Variant mistake, Path tree, Path out) throws IOException {
         Path classes = out.resolve("classes");
         Path done = out.resolve("compiled");
         if (!Files.exists(done)) {
-            if (!ProjectCompiler.compile(mistake.folder, mistake.sources, classes, GradingClasses.handout(tree).toString()).ok()) {
+            Set<String> replaced = mistake.sources.stream().map(p -> p.getFileName().toString()).collect(Collectors.toSet());
+            List<Path> sources = new ArrayList<>(mistake.sources);
+            for (String file : StudentFiles.in(tree).keySet()) {
+                if (!replaced.contains(Path.of(file).getFileName().toString())) {
+                    sources.add(tree.resolve(file));
+                }
+            }
+            if (!ProjectCompiler.compile(mistake.folder, sources, classes, GradingClasses.handout(tree).toString()).ok()) {
                 return null;
             }
             Files.writeString(done, "");

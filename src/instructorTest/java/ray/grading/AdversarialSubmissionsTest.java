@@ -465,13 +465,17 @@ public class AdversarialSubmissionsTest {
         }
     }
 
-    /** The SHA-256 of every file's path, mode and bytes under {@code root}. */
+    /**
+     * The SHA-256 of every file's path, owner, owner's permissions and bytes under {@code root}. The
+     * group's and others' permissions are left out: run_autograder itself takes them away.
+     */
     private static String fingerprint(Path root) throws Exception {
         MessageDigest digest = MessageDigest.getInstance("SHA-256");
         try (Stream<Path> walk = Files.walk(root)) {
             for (Path p : walk.sorted().collect(Collectors.toList())) {
                 digest.update(root.relativize(p).toString().getBytes(StandardCharsets.UTF_8));
-                digest.update(PosixFilePermissions.toString(Files.getPosixFilePermissions(p)).getBytes(StandardCharsets.UTF_8));
+                digest.update(Files.getOwner(p).getName().getBytes(StandardCharsets.UTF_8));
+                digest.update(PosixFilePermissions.toString(Files.getPosixFilePermissions(p)).substring(0, 3).getBytes(StandardCharsets.UTF_8));
                 if (Files.isRegularFile(p)) {
                     digest.update(Files.readAllBytes(p));
                 }
@@ -528,9 +532,9 @@ public class AdversarialSubmissionsTest {
     }
 
     /** Every process of a student user (any grading slot's) still alive, as "pid user command". */
-    private static List<String> studentProcesses() {
-        return ProcessHandle.allProcesses().filter(p -> p.info().user().map(u -> u.startsWith(Sandbox.USER)).orElse(false))
-                .map(p -> p.pid() + " " + p.info().user().orElse("") + " " + p.info().commandLine().orElse("")).collect(Collectors.toList());
+    /** The student users' processes left 10 s after the grading ended (none, if it ended them all). */
+    private static List<String> studentProcesses() throws InterruptedException {
+        return StudentUserProcesses.livingAfter(Sandbox.USER, 10);
     }
 
     /**

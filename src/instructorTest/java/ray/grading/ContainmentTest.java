@@ -2,7 +2,6 @@ package ray.grading;
 
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
-import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 import static org.junit.Assume.assumeTrue;
 
@@ -10,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import java.util.stream.Collectors;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
@@ -27,7 +25,7 @@ public class ContainmentTest {
 
     @Test
     public void theSetupReadsBackAsWritten() throws Exception {
-        Containment written = new Containment(List.of("java", "-cp", "a b:c", "Main"), Map.of("HOME", "/h", "X", "1=2"), "ray1-student");
+        Containment written = new Containment(List.of("java", "-cp", "a b:c", "Main"), new java.util.TreeMap<>(Map.of("HOME", "/h", "X", "1=2")), "ray1-student");
         Path file = folder.getRoot().toPath().resolve("task-2");
         written.write(file);
         assertEquals(Files.readString(file), String.join("\n", "command java", "command -cp", "command a b:c", "command Main",
@@ -48,6 +46,8 @@ public class ContainmentTest {
         try (UserClaim claim = UserClaim.tryClaim(Sandbox.USER)) {
             assumeTrue("another grading on this machine holds " + Sandbox.USER, claim != null);
             int[] ids = Sandbox.lookUp(Sandbox.USER).get();
+            // The student's user must reach its home through the temporary folder (which only root may list).
+            Files.setPosixFilePermissions(folder.getRoot().toPath(), java.nio.file.attribute.PosixFilePermissions.fromString("rwx--x--x"));
             Path home = folder.newFolder("home").toPath();
             Files.setOwner(home, home.getFileSystem().getUserPrincipalLookupService().lookupPrincipalByName(Sandbox.USER));
             String marker = "ray1-containment-test-" + ProcessHandle.current().pid();
@@ -62,30 +62,15 @@ public class ContainmentTest {
                     "--", "bash", "-c", script)).redirectErrorStream(true).start();
             assertEquals("started", new String(p.getInputStream().readNBytes(7)));
             Thread.sleep(500);
-            assertTrue("its processes run: " + processesOf(Sandbox.USER), processesOf(Sandbox.USER).size() >= 5);
+            assertTrue("its processes run: " + StudentUserProcesses.living(Sandbox.USER), StudentUserProcesses.living(Sandbox.USER).size() >= 5);
             assertTrue(Files.exists(Path.of("/tmp", marker, "inside")));
             assertTrue(containment.endUsersProcesses() >= 5);
             assertTrue(p.waitFor(10, java.util.concurrent.TimeUnit.SECONDS));
             containment.removeUsersFiles();
-            assertEquals(List.of(), processesOf(Sandbox.USER));
+            assertEquals(List.of(), StudentUserProcesses.livingAfter(Sandbox.USER, 10));
             assertFalse("its file in the shared temporary folder", Files.exists(Path.of("/tmp", marker)));
             assertFalse("its file in its home", Files.exists(home.resolve("left")));
             assertTrue("its home itself stays", Files.isDirectory(home));
-        }
-    }
-
-    /** The user's processes that can still run (not zombies, which only wait for their parent to read their end). */
-    private static List<String> processesOf(String user) {
-        return ProcessHandle.allProcesses().filter(p -> p.isAlive() && p.info().user().map(user::equals).orElse(false) && !zombie(p))
-                .map(p -> p.pid() + " " + p.info().commandLine().orElse("?")).collect(Collectors.toList());
-    }
-
-    private static boolean zombie(ProcessHandle p) {
-        try {
-            String stat = Files.readString(Path.of("/proc", String.valueOf(p.pid()), "stat"));
-            return stat.charAt(stat.lastIndexOf(')') + 2) == 'Z';
-        } catch (java.io.IOException | RuntimeException e) {
-            return true; // gone
         }
     }
 }

@@ -53,4 +53,25 @@ public class MistakeEvidenceTest {
         assertArrayEquals(once.get("scenes/one-sphere.xml"), again.get("scenes/one-sphere.xml"));
         assertFalse(Files.exists(gradingTree));
     }
+
+    /**
+     * A mistake in one file of a task (RepeatTexture) runs with the solution's other files of that task
+     * (ClampTexture), as a student's submission with that one mistake would: it fails the repeat
+     * tests only, so its failures can be matched with a student's.
+     */
+    @Test(timeout = 300_000)
+    public void aMistakeInOneFileRunsBesideTheSolutionsOtherFiles() throws Exception {
+        Variant roundTwice = VariantFolders.in(PROJECT, StudentFiles.in(PROJECT)).stream()
+                .filter(v -> v.folder.getFileName().toString().equals("texture-round-twice")).findFirst().orElseThrow();
+        assertEquals(List.of("RepeatTexture.java"), roundTwice.sources.stream().map(p -> p.getFileName().toString()).collect(Collectors.toList()));
+        CompiledTree tree = CompiledTree.build(PROJECT, folder.getRoot().toPath().resolve("compiled"), LIBRARIES);
+        MistakeEvidence evidence = new MistakeEvidence(tree.root(), LIBRARIES);
+        Map<String, String> failed = evidence.failedUnitTests(folder.getRoot().toPath().resolve("no-such-tree"), roundTwice, "not used",
+                folder.getRoot().toPath().resolve("round-twice")).orElseThrow();
+        assertTrue(failed.toString(), failed.containsKey("ray.shading.RepeatTextureTest#theImagesEdgesWrapAsTheCourseDoes"));
+        assertTrue(failed.toString(), failed.keySet().stream().allMatch(id -> id.startsWith("ray.shading.RepeatTextureTest#")
+                || id.startsWith("ray.hidden.Task5HiddenTest#")));
+        assertFalse(failed.toString(), failed.values().stream().anyMatch(message -> message.contains("ClampTexture.getTexColor")
+                || message.contains("ClampTexture on")));
+    }
 }
