@@ -322,6 +322,34 @@ public class GraderTest {
         assertTrue(otherPoints + " of " + otherMax, otherPoints >= otherMax);
     }
 
+    /**
+     * A sphere that hits on every ray, whatever the segment (a real 2017 attempt's), answers every
+     * question of a search with a hit, so each ray's answers are many: they still fit the wire, and its
+     * renders fail by their pictures, not by the worker's end.
+     */
+    @Test(timeout = 600_000)
+    @SuppressWarnings("unchecked")
+    public void aSphereThatHitsOnEveryRayFailsItsRendersByThePicture() throws Exception {
+        Path flat = FOLDER.getRoot().toPath().resolve("submission-hits-everywhere");
+        Files.createDirectories(flat);
+        for (String file : StudentFiles.in(PROJECT).keySet()) {
+            Files.copy(PROJECT.resolve(file), flat.resolve(Path.of(file).getFileName().toString()));
+        }
+        Files.copy(Path.of(DiagnosisCase.ATTEMPTS, "2017-ray1", "Sphere.java"), flat.resolve("Sphere.java"),
+                java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        Path out = FOLDER.getRoot().toPath().resolve("grade-hits-everywhere");
+        assertEquals(0, new CommandLine(new Grader()).execute("--project", PROJECT.toString(), "--classpath", LIBRARIES,
+                "--submission", flat.toString(), "--out", out.toString(), "--task", "2"));
+        Map<String, Object> results = new Gson().fromJson(Files.readString(out.resolve("results.json"), StandardCharsets.UTF_8), Map.class);
+        List<Map<String, Object>> renders = ((List<Map<String, Object>>) results.get("tests")).stream()
+                .filter(t -> ((String) t.get("name")).contains("SphereRenderTest.rendersLikeTheReference[")).collect(Collectors.toList());
+        assertTrue(renders.stream().anyMatch(t -> ((String) t.get("name")).contains("[far-tiny-sphere]")));
+        for (Map<String, Object> t : renders) {
+            assertEquals(t.get("name").toString(), "failed", t.get("status"));
+            assertTrue(t.get("name") + ": " + t.get("output"), ((String) t.get("output")).contains(" does not look like "));
+        }
+    }
+
     private static String insertAfter(String source, String anchor, String inserted) {
         int at = source.indexOf(anchor);
         assertTrue("anchor " + anchor, at >= 0);

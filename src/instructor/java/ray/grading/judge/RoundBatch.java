@@ -135,7 +135,10 @@ final class RoundBatch {
     /** The messages of this batch, each with where its sections start and stop (for reading its answer). */
     private final List<int[][]> sent = new ArrayList<>();
 
-    /** Writes the batch as messages of at most about {@link #MESSAGE_BYTES} and sends them, not waiting for the answers. */
+    /**
+     * Writes the batch as messages of at most about {@link #MESSAGE_BYTES}, whose answers may take at
+     * most about {@link Batches#ASKED_ANSWER_BYTES}, and sends them, not waiting for the answers.
+     */
     void ask(Worker worker) {
         JudgeObjects objects = worker.objects();
         List<WireOut> messages = new ArrayList<>();
@@ -174,9 +177,12 @@ final class RoundBatch {
         WireOut intersects = new WireOut();
         WireOut bases = new WireOut();
         int[] baseGroups = {0};
+        // What the answers to this message's questions may take (Batches.ASKED_ANSWER_BYTES): its sections share it.
+        long[] answerBytes = {0};
         int k = from[0];
-        for (; k < groups.size() && (k == from[0] || intersects.size() + bases.size() < MESSAGE_BYTES); k++) {
+        for (; k < groups.size() && (k == from[0] || intersects.size() + bases.size() < MESSAGE_BYTES && answerBytes[0] < Batches.ASKED_ANSWER_BYTES); k++) {
             Group g = groups.get(k);
+            answerBytes[0] += (long) g.candidates.size() * g.targets.size() * Batches.ANSWER_BYTES_AT_MOST;
             int rayIndex = newRay(rays, g.ray);
             intersects.varint(rayIndex).varint(g.candidates.size());
             for (Question c : g.candidates) {
@@ -196,13 +202,14 @@ final class RoundBatch {
         }
         to[0] = k;
         WireOut cameras = new WireOut();
-        to[1] = writeCalls(m, cameras, cameraCalls, from[1]);
+        to[1] = writeCalls(m, cameras, cameraCalls, from[1], answerBytes);
         WireOut textures = new WireOut();
-        to[2] = writeCalls(m, textures, textureCalls, from[2]);
+        to[2] = writeCalls(m, textures, textureCalls, from[2], answerBytes);
         WireOut anys = new WireOut();
         int a = from[3];
-        for (; a < anyHits.size() && (a == from[3] || anys.size() < MESSAGE_BYTES); a++) {
+        for (; a < anyHits.size() && (a == from[3] || anys.size() < MESSAGE_BYTES && answerBytes[0] < Batches.ASKED_ANSWER_BYTES); a++) {
             Question q = anyHits.get(a);
+            answerBytes[0] += Batches.ANSWER_BYTES_AT_MOST;
             anys.varint(m.target(q.target)).varint(newRay(rays, q)).f64(q.end);
         }
         to[3] = a;
@@ -253,11 +260,12 @@ final class RoundBatch {
         return known;
     }
 
-    private static int writeCalls(JudgeObjects.Message m, WireOut section, List<Question> calls, int from) {
+    private static int writeCalls(JudgeObjects.Message m, WireOut section, List<Question> calls, int from, long[] answerBytes) {
         WireOut entries = new WireOut();
         int k = from;
-        for (; k < calls.size() && (k == from || entries.size() < MESSAGE_BYTES); k++) {
+        for (; k < calls.size() && (k == from || entries.size() < MESSAGE_BYTES && answerBytes[0] < Batches.ASKED_ANSWER_BYTES); k++) {
             Question q = calls.get(k);
+            answerBytes[0] += Batches.ANSWER_BYTES_AT_MOST;
             entries.u8(Protocol.REF_TWIN).i32(m.target(q.target)).f64(q.u).f64(q.v);
         }
         section.i32(k - from).raw(entries);

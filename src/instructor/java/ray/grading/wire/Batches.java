@@ -42,6 +42,29 @@ public final class Batches {
     public static final int MAX_CANDIDATES = 24;
     /** Targets of a ray beyond which the worker adds no candidates: a search asks a few dozen surfaces a ray. */
     public static final int MAX_SEARCHED = 64;
+    /*
+     * An answer must fit one frame (Frames.MAX_FRAME_BYTES, 96 MB), however the student's code answers;
+     * its parts are bounded so that they always do:
+     *   the answers to what the judge asked:  at most ASKED_ANSWER_BYTES (the judge splits its questions so);
+     *   whole throwables:                     THROWN_BYTES, plus the one that crosses it;
+     *   the answers to candidates it added:   SPECULATED_BYTES, plus one ray's worth (MAX_CANDIDATES × MAX_SEARCHED answers);
+     * 48 + 4 (+ 1) + 24 + 24 × 64 × 1.4 KB (2.2) ≈ 79 MB.
+     */
+    /**
+     * Bytes one answer (an intersect's, a call's, an any-hit's, with the needed judge-side answer it
+     * names) takes at most once the whole throwables are spent: a record with a foreign surface's name
+     * (about 630), or a throwable in brief ({@link ThrownData#brief}, about 1,330).
+     */
+    public static final int ANSWER_BYTES_AT_MOST = 1400;
+    /** The answers to a message's own questions, counted at {@link #ANSWER_BYTES_AT_MOST} each, stay below this. */
+    public static final long ASKED_ANSWER_BYTES = 48L << 20;
+    /** Bytes of whole throwables (with their frames and causes) one answer carries; later ones go in brief. */
+    public static final long THROWN_BYTES = 4L << 20;
+    /**
+     * Once an answer holds this many bytes, the worker adds no more candidates of its own: they only
+     * spare the judge a round, and an intersect that hits everywhere would make each ray's answers many.
+     */
+    public static final long SPECULATED_BYTES = 24L << 20;
     public static final int ANSWERED = 0;
     public static final int NEEDS = 1;
     /** A target's answers: it missed on every candidate and changed nothing (the usual answer, one byte). */

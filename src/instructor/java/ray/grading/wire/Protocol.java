@@ -82,6 +82,11 @@ public final class Protocol {
     public static final int MAX_MESSAGE_BYTES = 16_000;
     /** Bytes of a class, method or file name. */
     public static final int MAX_NAME_BYTES = 512;
+
+    /** {@code name} (of a class, method or file) cut to what a reader takes: UTF-8 takes at most four bytes a character. */
+    public static String cutName(String name) {
+        return name.length() <= MAX_NAME_BYTES / 4 ? name : name.substring(0, MAX_NAME_BYTES / 4);
+    }
     /** Frames of a stack trace kept, and causes followed. */
     public static final int MAX_FRAMES = 64;
     public static final int MAX_CAUSES = 4;

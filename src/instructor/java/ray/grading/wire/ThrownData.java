@@ -37,8 +37,8 @@ public final class ThrownData {
             if (f.getClassName().startsWith(stopAt) || frames.size() >= Protocol.MAX_FRAMES) {
                 break;
             }
-            frames.add(new StackTraceElement(cut(f.getClassName(), Protocol.MAX_NAME_BYTES / 4), cut(f.getMethodName(), Protocol.MAX_NAME_BYTES / 4),
-                    f.getFileName() == null ? null : cut(f.getFileName(), Protocol.MAX_NAME_BYTES / 4), f.getLineNumber()));
+            frames.add(new StackTraceElement(Protocol.cutName(f.getClassName()), Protocol.cutName(f.getMethodName()),
+                    f.getFileName() == null ? null : Protocol.cutName(f.getFileName()), f.getLineNumber()));
         }
         Throwable c = t.getCause();
         ThrownData cause = c != null && c != t && depth < Protocol.MAX_CAUSES ? of(c, stopAt, depth + 1) : null;
@@ -49,7 +49,7 @@ public final class ThrownData {
             // The student's exception class chooses its getMessage: one that throws says so.
             message = "(its getMessage threw " + e.getClass().getName() + ")";
         }
-        return new ThrownData(cut(t.getClass().getName(), Protocol.MAX_NAME_BYTES / 4),
+        return new ThrownData(Protocol.cutName(t.getClass().getName()),
                 message == null ? null : cut(message, Protocol.MAX_MESSAGE_BYTES / 4), frames, cause);
     }
 

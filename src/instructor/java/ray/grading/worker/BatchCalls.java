@@ -134,7 +134,7 @@ final class BatchCalls {
 
     /** A BATCH message; its answer. */
     WireOut answer(WireIn in) {
-        thrownBytesLeft = THROWN_BYTES;
+        thrownBytesLeft = Batches.THROWN_BYTES;
         objects.define(in);
         objects.settle();
         int rayCount = in.count(Protocol.MAX_ENTRIES, "rays");
@@ -179,6 +179,7 @@ final class BatchCalls {
         }
         in.end();
         WireOut answer = new WireOut();
+        answering = answer;
         link.inBatch(running);
         try {
             for (RayCalls ray : intersects) {
@@ -262,12 +263,14 @@ final class BatchCalls {
     }
 
     /**
-     * Bytes of whole throwables one answer carries at most; later ones go in brief. Code that throws on
-     * every call of a render (a static initializer that failed) would otherwise fill an answer past
-     * what a frame may hold, and the first throwables are what the render reports.
+     * Bytes of whole throwables this answer may still carry ({@link Batches#THROWN_BYTES}); later ones go
+     * in brief. Code that throws on every call of a render (a static initializer that failed) would
+     * otherwise fill an answer past what a frame may hold, and the first throwables are what the render
+     * reports.
      */
-    private static final long THROWN_BYTES = 4 << 20;
     private long thrownBytesLeft;
+    /** The answer being written, to stop adding candidates once it holds {@link Batches#SPECULATED_BYTES}. */
+    private WireOut answering;
 
     /** What {@code t} is, as the judge is told: whole while this answer has room for it, then in brief. */
     private ThrownData thrown(Throwable t) {
@@ -277,6 +280,11 @@ final class BatchCalls {
         }
         thrownBytesLeft -= data.estimatedBytes();
         return data;
+    }
+
+    /** About how many bytes the answer holds so far: what is written, and the needed judge-side answers to be written at its end. */
+    private long answeredBytes(Running running) {
+        return answering.size() + (long) Batches.ANSWER_BYTES_AT_MOST * (running.neededBases.size() + running.neededExact.size());
     }
 
     /** A target not run on an added candidate: it comes before the hit the candidate follows, and the search never asks it so. */
@@ -341,7 +349,7 @@ final class BatchCalls {
                         IntersectionRecord after = new IntersectionRecord();
                         after.set(candidate.before);
                         Records.apply(a.mask, a.written, after);
-                        addCandidate(a.written.t, after, t, c);
+                        addCandidate(running, a.written.t, after, t, c);
                     }
                 }
             }
@@ -357,8 +365,8 @@ final class BatchCalls {
             }
         }
 
-        private void addCandidate(double end, IntersectionRecord before, int fromTarget, int fromCandidate) {
-            if (candidates.size() >= Batches.MAX_CANDIDATES) {
+        private void addCandidate(Running running, double end, IntersectionRecord before, int fromTarget, int fromCandidate) {
+            if (candidates.size() >= Batches.MAX_CANDIDATES || answeredBytes(running) >= Batches.SPECULATED_BYTES) {
                 return;
             }
             for (Candidate c : candidates) {

@@ -270,7 +270,7 @@ final class WorkerObjects implements Refs {
             out.u8(Protocol.REF_PLACED).i32(placedHandles.get(surface));
         } else {
             // Something the student's code made: the judge learns only its class.
-            out.u8(Protocol.REF_FOREIGN).str(surface.getClass().getName());
+            out.u8(Protocol.REF_FOREIGN).str(Protocol.cutName(surface.getClass().getName()));
         }
     }
 

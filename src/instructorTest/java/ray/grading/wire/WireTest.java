@@ -18,6 +18,31 @@ import ray.math.Vec3;
  */
 public class WireTest {
     /** Seeded random values of every kind come back bit for bit, NaNs, infinities and −0 included. */
+    /**
+     * However the student's code answers, an answer fits one frame: a throwable in brief with the
+     * longest names and message and a hit with a foreign surface of the longest name stay within
+     * {@link Batches#ANSWER_BYTES_AT_MOST}, and the budgets together stay below the frame's limit.
+     */
+    @Test
+    public void theLargestAnswerFitsAFrame() {
+        String longName = "\u4e00".repeat(70_000); // three UTF-8 bytes a character, longer than any limit
+        ThrownData whole = ThrownData.of(new IllegalStateException(longName), "no.such.package");
+        ThrownData brief = new ThrownData(Protocol.cutName(longName), longName, java.util.List.of(), null).brief();
+        WireOut thrown = new WireOut();
+        Answer.threw(brief).write(thrown, null);
+        assertTrue(thrown.size() + " bytes", thrown.size() <= Batches.ANSWER_BYTES_AT_MOST);
+        assertTrue(whole.estimatedBytes() > brief.estimatedBytes());
+        WireOut hit = new WireOut();
+        hit.u8(Protocol.RETURNED).bool(true).u8(0xff).f64(1).vec(new Vec3(1, 2, 3)).vec(new Vec3(1, 2, 3))
+                .u8(Protocol.REF_FOREIGN).str(Protocol.cutName(longName)).f64(1).f64(1).f64(1).f64(1).u8(3).f64(0).f64(1);
+        assertTrue(hit.size() + " bytes", hit.size() <= Batches.ANSWER_BYTES_AT_MOST);
+        WireOut wholeOut = new WireOut();
+        whole.write(wholeOut);
+        long oneRaysSpeculation = (long) Batches.MAX_CANDIDATES * Batches.MAX_SEARCHED * Batches.ANSWER_BYTES_AT_MOST;
+        long largest = Batches.ASKED_ANSWER_BYTES + Batches.THROWN_BYTES + wholeOut.size() + Batches.SPECULATED_BYTES + oneRaysSpeculation;
+        assertTrue(largest + " bytes", largest < Frames.MAX_FRAME_BYTES);
+    }
+
     @Test
     public void everyValueComesBackBitForBit() {
         Random random = new Random(40);
