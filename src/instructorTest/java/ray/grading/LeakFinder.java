@@ -20,8 +20,10 @@ import java.util.stream.Stream;
  * Looks for the grader's secrets in text a student sees, in the encodings a leaking submission would
  * use: plain, reversed, base64 (also reversed, also of gzipped bytes) and hex (also reversed). A
  * secret is any {@value #WINDOW}-byte window of a hidden test's source or class file, of a solution
- * block, or of a solution class file, that the handout's own classes (which every student has) do not
- * hold too.
+ * block, or of a solution class file, that neither the handout's own classes and visible tests (which
+ * every student has) nor the JDK's class files hold: a window the JDK holds too is the boilerplate of every class file
+ * (the bootstrap of a string concatenation, say), which code reading its own process's memory finds in
+ * the JDK's image mapped there.
  */
 final class LeakFinder {
     static final int WINDOW = 64;
@@ -53,6 +55,92 @@ final class LeakFinder {
     }
 
     /**
+     * Counts {@code text} as known: what every student sees (the visible tests' messages to the stub
+     * handout) may say what a hidden test's source says too, an input described alike.
+     */
+    void know(String text) {
+        for (byte[] bytes : List.of(text.getBytes(StandardCharsets.UTF_8), text.getBytes(StandardCharsets.ISO_8859_1))) {
+            String s = new String(bytes, StandardCharsets.ISO_8859_1);
+            for (int i = 0; i + WINDOW <= s.length(); i++) {
+                windows.remove(s.substring(i, i + WINDOW));
+            }
+        }
+    }
+
+    /** Powers of this odd number weigh a window's bytes in its hash (Rabin–Karp rolling hash, modulo 2^64). */
+    private static final long HASH_BASE = 0x100000001b3L;
+
+    /**
+     * Removes every window that the running JDK's image of class files ({@code lib/modules}) holds:
+     * each window's hash goes in a table, then one pass over the image with a rolling hash finds those
+     * it holds (a hash that matches by chance removes a window too: one in 2^64).
+     */
+    private void removeJdkWindows() throws IOException {
+        Path image = Path.of(System.getProperty("java.home"), "lib", "modules");
+        if (windows.isEmpty() || !Files.isRegularFile(image)) {
+            return;
+        }
+        long[] table = new long[Integer.highestOneBit(windows.size() * 2) << 1];
+        for (String w : windows) {
+            insert(table, hash(w));
+        }
+        long top = 1;
+        for (int i = 1; i < WINDOW; i++) {
+            top *= HASH_BASE;
+        }
+        Set<Long> found = new HashSet<>();
+        try (java.nio.channels.FileChannel channel = java.nio.channels.FileChannel.open(image)) {
+            java.nio.MappedByteBuffer bytes = channel.map(java.nio.channels.FileChannel.MapMode.READ_ONLY, 0, channel.size());
+            long h = 0;
+            int n = bytes.limit();
+            for (int i = 0; i < n; i++) {
+                if (i >= WINDOW) {
+                    h -= (bytes.get(i - WINDOW) & 0xff) * top;
+                }
+                h = h * HASH_BASE + (bytes.get(i) & 0xff);
+                if (i >= WINDOW - 1 && contains(table, h)) {
+                    found.add(nonZero(h));
+                }
+            }
+        }
+        windows.removeIf(w -> found.contains(hash(w)));
+    }
+
+    private static long hash(String window) {
+        long h = 0;
+        for (int i = 0; i < window.length(); i++) {
+            h = h * HASH_BASE + (window.charAt(i) & 0xff);
+        }
+        return nonZero(h);
+    }
+
+    /** The table marks an empty slot with 0. */
+    private static long nonZero(long h) {
+        return h == 0 ? 1 : h;
+    }
+
+    private static void insert(long[] table, long h) {
+        int mask = table.length - 1;
+        for (int slot = (int) (h ^ (h >>> 32)) & mask; ; slot = (slot + 1) & mask) {
+            if (table[slot] == 0 || table[slot] == h) {
+                table[slot] = h;
+                return;
+            }
+        }
+    }
+
+    private static boolean contains(long[] table, long h) {
+        h = nonZero(h);
+        int mask = table.length - 1;
+        for (int slot = (int) (h ^ (h >>> 32)) & mask; table[slot] != 0; slot = (slot + 1) & mask) {
+            if (table[slot] == h) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
      * The secrets of the project: hidden tests (sources, and classes: the tree's compiled ones where it
      * has them, as the Gradescope bundle does, else as this JVM loads them), solution blocks and, with a
      * compiled tree, the solution's classes; less what its compiled handout holds.
@@ -81,6 +169,19 @@ final class LeakFinder {
             }
             known.addAll(classFiles(compiled.resolveSibling("handout"), name -> true));
         }
+        // The handout's own tests are every student's: a hidden test that says what a visible one says keeps no secret in it.
+        Path visibleTests = project.resolve("src/test/java");
+        if (Files.isDirectory(visibleTests)) {
+            try (Stream<Path> sources = Files.walk(visibleTests)) {
+                for (Path source : sources.filter(p -> p.toString().endsWith(".java")).sorted().collect(Collectors.toList())) {
+                    known.add(Files.readAllBytes(source));
+                    // And compiled: the source may spell a character as an escape (\u2212) that the class file holds as UTF-8.
+                    String className = source.getFileName().toString().replace(".java", "");
+                    known.addAll(classFiles(compiled.resolve(visibleTests.relativize(source)).getParent(),
+                            name -> name.equals(className + ".class") || name.startsWith(className + "$")));
+                }
+            }
+        }
         for (String file : StudentFiles.in(project).keySet()) {
             String text = Files.readString(project.resolve(file), StandardCharsets.UTF_8);
             Matcher block = Pattern.compile(Pattern.quote(SolutionMarkers.BEGIN) + "(.*?)" + Pattern.quote(SolutionMarkers.END),
@@ -89,7 +190,9 @@ final class LeakFinder {
                 secrets.add(block.group(1).getBytes(StandardCharsets.UTF_8));
             }
         }
-        return new LeakFinder(secrets, known);
+        LeakFinder finder = new LeakFinder(secrets, known);
+        finder.removeJdkWindows();
+        return finder;
     }
 
     /** The bytes of the class files under {@code folder} (all its subfolders) whose names {@code named} accepts. */
