@@ -56,10 +56,10 @@ public class ContainmentTest {
                     + " (trap '' TERM HUP INT; sleep 1000) </dev/null >/dev/null 2>&1 &"
                     + " (sleep 1000 & kill -STOP $!; wait) </dev/null >/dev/null 2>&1 &"
                     + " echo started; sleep 1000";
-            Containment containment = new Containment(List.of(Sandbox.command("setpriv"), "--reuid=" + ids[0], "--regid=" + ids[1],
-                    "--clear-groups", "--", "bash", "-c", script), Map.of("HOME", home.toString()), Sandbox.USER);
-            Process p = new ProcessBuilder(List.of(Sandbox.command("setpriv"), "--reuid=" + ids[0], "--regid=" + ids[1], "--clear-groups",
-                    "--", "bash", "-c", script)).redirectErrorStream(true).start();
+            List<String> command = List.of(Sandbox.command("setpriv"), "--reuid=" + ids[0], "--regid=" + ids[1], "--clear-groups",
+                    "--", "bash", "-c", script);
+            Containment containment = new Containment(command, Map.of("HOME", home.toString()), Sandbox.USER);
+            Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
             assertEquals("started", new String(p.getInputStream().readNBytes(7)));
             Thread.sleep(500);
             assertTrue("its processes run: " + StudentUserProcesses.living(Sandbox.USER), StudentUserProcesses.living(Sandbox.USER).size() >= 5);

@@ -45,12 +45,7 @@ final class LeakFinder {
                 windows.add(text.substring(i, i + WINDOW));
             }
         }
-        for (byte[] open : known) {
-            String text = new String(open, StandardCharsets.ISO_8859_1);
-            for (int i = 0; i + WINDOW <= text.length(); i++) {
-                windows.remove(text.substring(i, i + WINDOW));
-            }
-        }
+        known.forEach(this::removeWindowsOf);
         this.secretBytes = total;
     }
 
@@ -59,11 +54,14 @@ final class LeakFinder {
      * handout) may say what a hidden test's source says too, an input described alike.
      */
     void know(String text) {
-        for (byte[] bytes : List.of(text.getBytes(StandardCharsets.UTF_8), text.getBytes(StandardCharsets.ISO_8859_1))) {
-            String s = new String(bytes, StandardCharsets.ISO_8859_1);
-            for (int i = 0; i + WINDOW <= s.length(); i++) {
-                windows.remove(s.substring(i, i + WINDOW));
-            }
+        removeWindowsOf(text.getBytes(StandardCharsets.UTF_8));
+        removeWindowsOf(text.getBytes(StandardCharsets.ISO_8859_1));
+    }
+
+    private void removeWindowsOf(byte[] open) {
+        String text = new String(open, StandardCharsets.ISO_8859_1);
+        for (int i = 0; i + WINDOW <= text.length(); i++) {
+            windows.remove(text.substring(i, i + WINDOW));
         }
     }
 

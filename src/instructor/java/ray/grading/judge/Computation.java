@@ -20,11 +20,11 @@ final class Computation {
     private static final int SCANNED = 16;
 
     List<Question> log = new ArrayList<>();
-    private final List<Question> pool = new ArrayList<>(0);
+    /** The log, found by hash when a call leaves its order; made when first needed, anew for each log. */
+    private Hashed logByHash;
+    private final Hashed pool = new Hashed(new ArrayList<>(0));
     private List<Question> next = new ArrayList<>();
     private int cursor;
-    private Map<Integer, List<Question>> index;
-    private Map<Integer, List<Question>> poolIndex;
     /** This run used a question without an answer. */
     boolean guessed;
     /** This run asked a question not sent yet: the next batch takes it. */
@@ -36,14 +36,13 @@ final class Computation {
         guessed = false;
         asking = false;
         next = new ArrayList<>(log.size());
-        index = null;
     }
 
     /** Ends a run: the questions it used are the log. */
     void end() {
         log = next;
         next = null;
-        index = null;
+        logByHash = null;
     }
 
     /** Notes that this run used {@code q}'s answer, which is unknown: a guess, and a question to send unless it was. */
@@ -94,40 +93,52 @@ final class Computation {
         return used(Question.uv(kind, target, u, v));
     }
 
-    /** The log's questions that may match a call whose inputs hash to {@code hash}: the whole log when it is short, else those of that hash. */
+    /** The log's questions that may match a call whose inputs hash to {@code hash}. */
     private List<Question> candidates(int hash) {
-        if (log.size() <= SCANNED) {
-            return log;
+        if (logByHash == null) {
+            logByHash = new Hashed(log);
         }
-        if (index == null) {
-            index = new HashMap<>();
-            for (Question q : log) {
-                index.computeIfAbsent(q.hash(), h -> new ArrayList<>(1)).add(q);
-            }
-        }
-        return index.getOrDefault(hash, List.of());
+        return logByHash.candidates(hash);
     }
 
     /** Keeps an answer the worker gave unasked (what a search asks next), for a later run's call to find. */
     void pool(Question answered) {
         pool.add(answered);
-        if (poolIndex != null) {
-            poolIndex.computeIfAbsent(answered.hash(), h -> new ArrayList<>(1)).add(answered);
-        }
     }
 
-    /** The pool's answers that may match a call whose inputs hash to {@code hash}, as {@link #candidates} finds the log's. */
+    /** The pool's answers that may match a call whose inputs hash to {@code hash}. */
     private List<Question> pooled(int hash) {
-        if (pool.size() <= SCANNED) {
-            return pool;
+        return pool.candidates(hash);
+    }
+
+    /** Questions looked up by their inputs' hash: all of them while they are few, else those of that hash (indexed when first needed). */
+    private static final class Hashed {
+        private final List<Question> all;
+        private Map<Integer, List<Question>> byHash;
+
+        Hashed(List<Question> all) {
+            this.all = all;
         }
-        if (poolIndex == null) {
-            poolIndex = new HashMap<>();
-            for (Question q : pool) {
-                poolIndex.computeIfAbsent(q.hash(), h -> new ArrayList<>(1)).add(q);
+
+        void add(Question q) {
+            all.add(q);
+            if (byHash != null) {
+                byHash.computeIfAbsent(q.hash(), h -> new ArrayList<>(1)).add(q);
             }
         }
-        return poolIndex.getOrDefault(hash, List.of());
+
+        List<Question> candidates(int hash) {
+            if (all.size() <= SCANNED) {
+                return all;
+            }
+            if (byHash == null) {
+                byHash = new HashMap<>();
+                for (Question q : all) {
+                    byHash.computeIfAbsent(q.hash(), h -> new ArrayList<>(1)).add(q);
+                }
+            }
+            return byHash.getOrDefault(hash, List.of());
+        }
     }
 
     private Question used(Question q) {
