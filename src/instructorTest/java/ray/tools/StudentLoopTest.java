@@ -128,6 +128,73 @@ public class StudentLoopTest {
         assertTrue(wrong, wrong.contains("-Ptask=9: there is no such task; give a task number from 1 to 6"));
     }
 
+    /**
+     * On Java 24 and later Gradle 4.4's test worker cannot start, and `:test` runs the classes with
+     * JUnit directly: what the student reads must be what the worker route prints. The failure is
+     * Gradle's own for a failing test task (no script location, no other task's name), the summary
+     * is last, a passing run prints no "SKIPPED", and an unchanged rerun is up to date and repeats
+     * the summary. Gradle's "* Try:" lines (--stacktrace, --scan) follow every failed build on both
+     * routes; they are Gradle's and no build setting removes them, so this compares them with the
+     * worker route instead of forbidding them.
+     */
+    @Test
+    public void theJava24RoutePrintsWhatTheWorkerRoutePrints() throws Exception {
+        Path java24 = javaHomeOf24OrLater();
+        assumeTrue("no JDK 24 or later in /usr/lib/jvm or RAY1_JAVA24_HOME", java24 != null);
+        String triangle = "src/main/java/ray/surface/Triangle.java";
+        String onWorker = withVariant(triangle, "triangle-no-sum-check", "test", "-Ptask=3");
+        String route = withSource(triangle, Files.readString(variant("triangle-no-sum-check", "ray/surface/Triangle.java")),
+                java24, "test", "-Ptask=3");
+        assertTrue(route, route.contains("running the tests with JUnit directly"));
+        assertFailedAndSummaryLast(route);
+        for (String absent : List.of("legacy-test-worker.gradle", "* Where:", "WithJUnit", "SKIPPED")) {
+            assertFalse(absent + " in:\n" + route, route.contains(absent));
+        }
+        assertTrue(route, route.contains("Execution failed for task ':test'.\n> There were failing tests."));
+        assertEquals(route, gradleBlockHeadings(onWorker), gradleBlockHeadings(route));
+        assertEquals(route, count(onWorker, "--scan"), count(route, "--scan"));
+        assertEquals(route, closing(onWorker).group(), closing(route).group());
+        assertEquals(route, sections(onWorker), sections(route));
+
+        String passing = gradle(java24, "test", "-Ptask=3");
+        assertFalse(passing, passing.contains("SKIPPED"));
+        assertEquals(passing, "0", closing(passing).group(2));
+        String again = gradle(java24, "test", "-Ptask=3");
+        assertTrue(again, again.contains(":test UP-TO-DATE"));
+        assertTrue(again, again.contains("Nothing changed since the last gradle test; its summary again:"));
+        assertEquals(again, closing(passing).group(), closing(again).group());
+    }
+
+    /** Gradle's failure block as its headings ("* What went wrong:", "* Try:", ...), in order. */
+    private static List<String> gradleBlockHeadings(String out) {
+        return out.lines().filter(l -> l.startsWith("* ") || l.startsWith("FAILURE:") || l.startsWith("BUILD "))
+                .map(l -> l.startsWith("BUILD ") ? l.replaceFirst(" in .*", "") : l).collect(Collectors.toList());
+    }
+
+    /** A JDK of Java 24 or later (RAY1_JAVA24_HOME, else the newest in /usr/lib/jvm), or null. */
+    private static Path javaHomeOf24OrLater() throws IOException {
+        String given = System.getenv("RAY1_JAVA24_HOME");
+        if (given != null && !given.isBlank()) {
+            return Path.of(given);
+        }
+        Path jvms = Path.of("/usr/lib/jvm");
+        if (!Files.isDirectory(jvms)) {
+            return null;
+        }
+        Pattern version = Pattern.compile("JAVA_VERSION=\"(\\d+)");
+        try (var homes = Files.list(jvms)) {
+            return homes.filter(h -> Files.isExecutable(h.resolve("bin/javac")) && Files.isRegularFile(h.resolve("release")))
+                    .filter(h -> {
+                        try {
+                            Matcher m = version.matcher(Files.readString(h.resolve("release")));
+                            return m.find() && Integer.parseInt(m.group(1)) >= 24;
+                        } catch (IOException e) {
+                            return false;
+                        }
+                    }).sorted().reduce((a, b) -> b).orElse(null);
+        }
+    }
+
     /** The sections the summary lists, in order ("Task 3 (Triangle)", "Renders", ...). */
     private static List<String> sections(String out) {
         List<String> found = new ArrayList<>();
@@ -170,10 +237,15 @@ public class StudentLoopTest {
 
     /** Runs gradle with {@code file} holding {@code source}, then puts the solution back. */
     private static String withSource(String file, String source, String... args) throws Exception {
+        return withSource(file, source, null, args);
+    }
+
+    /** The same, with Gradle on the JDK at {@code javaHome} (null: the one this test runs on). */
+    private static String withSource(String file, String source, Path javaHome, String... args) throws Exception {
         Path target = handout.resolve(file);
         try {
             Files.writeString(target, source, StandardCharsets.UTF_8);
-            return gradle(args);
+            return gradle(javaHome, args);
         } finally {
             Files.copy(PROJECT.resolve(file), target, StandardCopyOption.REPLACE_EXISTING);
         }
@@ -181,11 +253,20 @@ public class StudentLoopTest {
 
     /** What `gradle ARGS --console=plain --offline` prints in the handout, stdout and stderr together. */
     private static String gradle(String... args) throws IOException, InterruptedException {
+        return gradle(null, args);
+    }
+
+    /** The same, with Gradle (its daemon and so the tests) on the JDK at {@code javaHome} (null: this test's). */
+    private static String gradle(Path javaHome, String... args) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of("gradle", "--console=plain", "--offline"));
         command.addAll(List.of(args));
         Path log = Files.createTempFile(FOLDER.getRoot().toPath(), "gradle", ".log");
-        Process process = new ProcessBuilder(command).directory(handout.toFile()).redirectErrorStream(true)
-                .redirectOutput(log.toFile()).start();
+        ProcessBuilder builder = new ProcessBuilder(command).directory(handout.toFile()).redirectErrorStream(true)
+                .redirectOutput(log.toFile());
+        if (javaHome != null) {
+            builder.environment().put("JAVA_HOME", javaHome.toString());
+        }
+        Process process = builder.start();
         if (!process.waitFor(10, TimeUnit.MINUTES)) {
             process.destroyForcibly();
             throw new AssertionError("gradle " + String.join(" ", args) + " did not finish in 10 minutes");
