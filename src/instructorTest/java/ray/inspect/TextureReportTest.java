@@ -136,7 +136,51 @@ public class TextureReportTest {
     @Test
     public void aNeighbouringTexelPointsAtTheRounding() {
         String out = report(new WrongLookup("round twice"), hitAt(0.05, 0.9));
-        assertTrue(out, out.contains("that is the neighbouring texel (1, 0): is u·W or (1 − v)·H rounded another way"));
+        assertTrue(out, out.contains("that is the neighbouring texel (1, 0), one column to the right: is u·W or (1 − v)·H rounded"
+                + " another way"));
+    }
+
+    /**
+     * One column of 8 rows, colored so that the row a lookup one row off reads (5) has the color of
+     * the mirrored row (1): matching colors would call it a mirror; its index says one row above.
+     */
+    private static final class OneRowOff extends Texture {
+        OneRowOff() {
+            super(rowsSharingColors());
+        }
+
+        private static Image rowsSharingColors() {
+            Image image = new Image(1, 8);
+            for (int row = 0; row < 8; row++) {
+                double gray = row == 1 || row == 5 ? 40 / 255.0 : row * 20 / 255.0 + 0.5;
+                image.set(0, 7 - row, v(gray, gray, gray));
+            }
+            return image;
+        }
+
+        /** H − 1 − (int) (v·H + ½): the rows flipped after the rounding. */
+        @Override
+        public Vec3 getTexColor(double u, double v) {
+            int h = image.height();
+            return texel(0, h - 1 - (int) (v * h + 0.5));
+        }
+    }
+
+    /** v = 0.3: the course's row is (int) (0.7·8 + ½) = 6; the lookup reads 8 − 1 − (int) (2.4 + ½) = 5; the mirrored row is 1. */
+    @Test
+    public void aLookupOneRowOffIsNamedByTheRowItReadNotByItsColor() {
+        String out = report(new OneRowOff(), hitAt(0.3, 0.3));
+        assertTrue(out, out.contains("texel        (0, 6) of 1×8"));
+        assertTrue(out, out.contains("that is texel (0, 5), one row above: flipping after the rounding, H − 1 − (int) (v·H + ½),"
+                + " is one row off everywhere"));
+        assertFalse(out, out.contains("mirrored"));
+    }
+
+    /** Outside the image the trace gives no verdict, but shows which texel the lookup read there. */
+    @Test
+    public void outsideTheImageTheTexelTheLookupReadIsShown() {
+        String out = report(new NearestTexel(), hitAt(1.2, 0.25));
+        assertTrue(out, out.contains("read         texel (1, 0)   (the one NearestTexel.getTexColor reads there)"));
     }
 
     /**

@@ -100,7 +100,7 @@ final class VariantGrading {
         return outcomes;
     }
 
-    private static Path compile(Variant variant, Path work) throws IOException {
+    static Path compile(Variant variant, Path work) throws IOException {
         Path out = work.resolve(variant.name);
         Files.createDirectories(out);
         List<String> sources;
@@ -117,7 +117,7 @@ final class VariantGrading {
         return out;
     }
 
-    private static List<String> classPath() {
+    static List<String> classPath() {
         return List.of(System.getProperty("java.class.path").split(File.pathSeparator));
     }
 

@@ -101,7 +101,8 @@ final class ClosestHitReport {
 
     /**
      * The group's hit checked against the smallest t of the surfaces alone, in one line: "✓ …",
-     * "(a tie …)", or "! …" when the group did not keep the closest hit.
+     * "(a tie …)", or "! …" when the group did not return the closest hit: naming the primitive that
+     * broke the intersect contract when one did ({@link SegmentEvidence}), else the group.
      */
     static String check(IntersectionRecord hit, List<ProbeNode> roots, ProbeNode nearest, SurfaceNames names) {
         if (nearest == null) {
@@ -109,6 +110,10 @@ final class ClosestHitReport {
         }
         double tolerance = 1e-12 * Math.max(1, Math.abs(nearest.t()));
         if (Math.abs(hit.t - nearest.t()) > tolerance) {
+            String culprit = SegmentEvidence.culprit(roots, nearest, hit.surface, names);
+            if (culprit != null) {
+                return culprit;
+            }
             return "! the smallest t in the list above is " + Fmt.num(nearest.t()) + ", at " + ProbeTree.path(roots, nearest, names)
                     + ": the group must keep the closest hit (shorten the ray to end at each hit's t). See TODO(Task 4)";
         }

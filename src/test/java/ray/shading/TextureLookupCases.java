@@ -73,6 +73,7 @@ public abstract class TextureLookupCases {
     @Test
     public void onATexelEdgeTheCourseFlipsVBeforeRounding() {
         assertTexel(rule + "; v = 0.5 lies on the edge between rows 1 and 2, and (int)((1 − 0.5)·3 + 0.5) = 2 (flip v, then"
-                + " round), not H − (int)(0.5·3 + 0.5) = 1 (round, then flip)", texture, W, H, 0.375, 0.5, 2, 2);
+                + " round), not H − (int)(0.5·3 + 0.5) = 1 (round, then flip: that form agrees with the course's except on such"
+                + " edges, and H − 1 − (int)(v·H + 0.5) is one row off everywhere)", texture, W, H, 0.375, 0.5, 2, 2);
     }
 }

@@ -1,0 +1,60 @@
+package ray.variants;
+
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+
+/**
+ * `ray1 trace` names the file whose code is wrong, by evidence, for mistakes that once sent the
+ * student to another file: a Triangle that ignores the segment's end (the group, correct, is not
+ * to blame), and a RepeatTexture one row off (not a mirrored row, which a texel of the same color
+ * suggested when texels were matched by color).
+ */
+public class TraceBlameTest {
+    @Rule
+    public TemporaryFolder folder = new TemporaryFolder();
+
+    /**
+     * Pixel (94, 151) of mesh-flat is where a render test's message pointed: the group, asking the
+     * mesh's triangles in turn with the ray shortened to the closest hit so far, gets a farther hit
+     * from a triangle that ignores ray.end and keeps it.
+     */
+    @Test
+    public void aTriangleThatIgnoresTheSegmentsEndIsBlamedNotTheGroup() throws Exception {
+        String out = VariantTrace.of(Variant.wrong("triangle-ignores-segment", 3), folder.getRoot().toPath(), "scenes/mesh-flat.xml", 94, 151);
+        assertTrue(out, out.contains("on the ray cut to"));
+        assertTrue(out, out.contains("Does Triangle.intersect check ray.end? See TODO(Task 3)"));
+        assertFalse(out, out.contains("the group must keep the closest hit"));
+        assertFalse(out, out.contains("TODO(Task 4)"));
+    }
+
+    /** The solution's trace of the same pixel blames no one. */
+    @Test
+    public void theSolutionsTraceOfThatPixelBlamesNoOne() throws Exception {
+        Path solution = folder.newFolder("solution").toPath();
+        Files.createDirectories(solution.resolve("ray/surface"));
+        Files.copy(Path.of("src/main/java/ray/surface/Triangle.java"), solution.resolve("ray/surface/Triangle.java"));
+        String out = VariantTrace.of(Variant.written("solution-triangle", 3, solution), folder.newFolder("work").toPath(),
+                "scenes/mesh-flat.xml", 94, 151);
+        assertTrue(out, out.contains("✓ the nearest hit in the list above"));
+        assertFalse(out, out.contains("on the ray cut to"));
+    }
+
+    /**
+     * Pixel (215, 87) of eclipse is on the globe, a RepeatTexture: the lookup H − 1 − (int) (v·H + ½)
+     * reads the texel one row above the course's, which the trace names by its index.
+     */
+    @Test
+    public void aRepeatTextureOneRowOffIsNamedByItsRowNotAsAMirror() throws Exception {
+        String out = VariantTrace.of(Variant.wrong("texture-rows-flipped-after-rounding", 5), folder.getRoot().toPath(),
+                "scenes/textured/eclipse.xml", 215, 87);
+        assertTrue(out, out.contains("one row above: flipping after the rounding, H − 1 − (int) (v·H + ½), is one row off"));
+        assertFalse(out, out.contains("mirrored row"));
+        assertTrue(out, out.contains("See TODO(Task 5)"));
+    }
+}
