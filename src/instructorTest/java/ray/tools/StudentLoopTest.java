@@ -113,6 +113,20 @@ public class StudentLoopTest {
         }
     }
 
+    /**
+     * A RepeatTexture one row off fails Task 5's unit tests, and the eclipse render, whose earth is
+     * a RepeatTexture written inline in its shader, goes under Task 5 with them: never under
+     * "Renders", which would say every task its scene uses passes.
+     */
+    @Test
+    public void aTextureRenderGoesUnderItsFailingTaskNotUnderRenders() throws Exception {
+        String out = withVariant("src/main/java/ray/shading/RepeatTexture.java", "texture-rows-flipped-after-rounding", "test", "-Ptask=5");
+        assertEquals(out, List.of("Task 5 (Textures)"), sections(out));
+        assertTrue(out, out.contains("TextureRenderTest > rendersLikeTheReference[eclipse]") || out.contains(" more"));
+        assertFalse(out, out.contains("Renders:"));
+        assertFailedAndSummaryLast(out);
+    }
+
     @Test
     public void oneTaskRunsAloneAndAnUpToDateRunRepeatsItsSummary() throws Exception {
         String out = gradle("test", "-Ptask=2");

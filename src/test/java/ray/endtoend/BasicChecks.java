@@ -31,13 +31,15 @@ final class BasicChecks {
     static Set<StudentTask> tasksOf(Scene scene) {
         Set<StudentTask> tasks = EnumSet.of(StudentTask.CAMERA, StudentTask.GROUP);
         addTasksOf(scene.getSurfaces(), tasks);
-        if (!scene.getTextures().isEmpty()) {
-            tasks.add(StudentTask.TEXTURE);
-        }
         return tasks;
     }
 
     private static void addTasksOf(Surface surface, Set<StudentTask> tasks) {
+        // A textured shader on any surface (named in the scene or written inline in it) looks its
+        // texture up with Task 5's code.
+        if (surface.getShader() != null && surface.getShader().getTexture() != null) {
+            tasks.add(StudentTask.TEXTURE);
+        }
         // The primitive's task as the renderer's pixel kinds name it (a mesh's or box's parts are triangles).
         int number = SurfaceKind.of(surface).task;
         for (StudentTask task : StudentTask.values()) {

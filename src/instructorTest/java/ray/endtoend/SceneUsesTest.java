@@ -1,0 +1,44 @@
+package ray.endtoend;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import java.util.Map;
+import java.util.Set;
+import org.junit.Test;
+import ray.scene.Scene;
+import ray.scene.SceneLoader;
+import ray.testing.StudentTask;
+
+/**
+ * The tasks a render's message says its scene uses come from what the scene holds: its camera and
+ * group always, each primitive's task, and Task 5 when any surface's shader is textured, whether the
+ * texture is named in the scene or written inline in the shader (eclipse's are inline). The test
+ * summary lists a differing render under a task of these whose unit tests fail, so a task left out
+ * here sent a render to "Renders" while its own task was failing.
+ */
+public class SceneUsesTest {
+    @Test
+    public void inlineTexturesCountAsTask5() throws Exception {
+        Scene eclipse = SceneLoader.load(RenderScenes.fileOf("eclipse"));
+        assertTrue(eclipse.getTextures().isEmpty()); // the point of this case: no named texture
+        assertEquals(Set.of(StudentTask.CAMERA, StudentTask.SPHERE, StudentTask.GROUP, StudentTask.TEXTURE), BasicChecks.tasksOf(eclipse));
+        assertEquals("The scene uses Task 1 (Camera rays), Task 2 (Sphere), Task 4 (Group) and Task 5 (Textures).",
+                RenderTestBase.usesLine(eclipse));
+    }
+
+    @Test
+    public void anUntexturedSceneDoesNotUseTask5() throws Exception {
+        assertEquals(Set.of(StudentTask.CAMERA, StudentTask.SPHERE, StudentTask.GROUP),
+                BasicChecks.tasksOf(SceneLoader.load(RenderScenes.fileOf("one-sphere"))));
+    }
+
+    /** Every graded render's own task is among those its scene uses. */
+    @Test
+    public void everyRendersOwnTaskIsAmongItsScenesTasks() throws Exception {
+        for (Map.Entry<String, StudentTask> e : RenderScenes.TASKS.entrySet()) {
+            Set<StudentTask> uses = BasicChecks.tasksOf(SceneLoader.load(RenderScenes.fileOf(e.getKey())));
+            assertTrue(e.getKey() + " uses " + uses, uses.contains(e.getValue()));
+        }
+    }
+}
