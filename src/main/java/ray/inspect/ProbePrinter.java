@@ -72,6 +72,10 @@ final class ProbePrinter {
         }
     }
 
+    /** Why a miss within rounding of an edge is no mistake. */
+    static final String CRACK = "a test may round such a ray to either side, so where two triangles share the edge both may"
+            + " miss it, a crack pixel the render tests allow";
+
     /** Whether the node's primitives are summed up in one line (a mesh, a box, a large group of primitives). */
     boolean summarized(ProbeNode node) {
         if (all || node.children.isEmpty() || !node.children.stream().allMatch(ProbeNode::isPrimitive)) {
@@ -86,7 +90,8 @@ final class ProbePrinter {
             return "threw " + p.test.failure;
         }
         if (!p.test.hit) {
-            return "miss";
+            String edge = EdgeGraze.ofMiss(p);
+            return edge == null ? "miss" : "miss   (the ray passes within rounding of its edge " + edge + ": " + CRACK + ")";
         }
         return "hit  t = " + Fmt.num(p.t()) + "  at " + Fmt.vec(p.worldLocation()) + (p == nearest ? "  ← nearest" : "");
     }
@@ -119,6 +124,10 @@ final class ProbePrinter {
                     .append(")");
         }
         s.append(", ").append(n - hits - failures).append(" miss");
+        long grazed = group.children.stream().filter(c -> EdgeGraze.ofMiss(c) != null).count();
+        if (grazed > 0) {
+            s.append(" (").append(grazed == 1 ? "one" : grazed + " of them").append(" within rounding of an edge: ").append(CRACK).append(")");
+        }
         if (failures > 0) {
             s.append(", ").append(failures).append(" threw");
         }
