@@ -3,7 +3,7 @@ package ray.surface;
 import ray.IntersectionRecord;
 import ray.Ray;
 
-public class Group extends GroupShape {
+public class Group extends GroupSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         Ray r = new Ray(ray.origin, ray.direction);

@@ -4,7 +4,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 
-public class Sphere extends SphereShape {
+public class Sphere extends SphereSurface {
     public Sphere() {
     }
 

@@ -4,7 +4,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 
-public class Triangle extends TriangleShape {
+public class Triangle extends TriangleSurface {
     public Triangle() {
     }
 

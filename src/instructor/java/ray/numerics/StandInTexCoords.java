@@ -2,7 +2,7 @@ package ray.numerics;
 
 import ray.IntersectionRecord;
 import ray.math.Vec3;
-import ray.surface.TriangleShape;
+import ray.surface.TriangleSurface;
 
 /**
  * The texture coordinates the stand-ins report, by the same conventions as the solution's Sphere and
@@ -20,7 +20,7 @@ final class StandInTexCoords {
     }
 
     /** The corners' coordinates blended by the barycentric weights. */
-    static void triangle(IntersectionRecord out, TriangleShape triangle, double beta, double gamma) {
+    static void triangle(IntersectionRecord out, TriangleSurface triangle, double beta, double gamma) {
         double alpha = 1 - beta - gamma;
         out.texU = alpha * triangle.getVt0().x + beta * triangle.getVt1().x + gamma * triangle.getVt2().x;
         out.texV = alpha * triangle.getVt0().y + beta * triangle.getVt1().y + gamma * triangle.getVt2().y;

@@ -23,7 +23,7 @@ import ray.scene.SceneLoader;
 import ray.shading.Light;
 import ray.shading.Shader;
 import ray.shading.ShadingContext;
-import ray.surface.GroupShape;
+import ray.surface.GroupSurface;
 import ray.surface.Sphere;
 import ray.surface.Surface;
 import ray.surface.Transformed;
@@ -136,18 +136,18 @@ final class Variants {
         }
     }
 
-    /** Replaces primitives inside every group's child list (read by reflection: GroupShape keeps it protected). */
+    /** Replaces primitives inside every group's child list (read by reflection: GroupSurface keeps it protected). */
     @SuppressWarnings("unchecked")
     private static void replacePrimitives(Surface root, UnaryOperator<Surface> replacement) {
         Field field;
         try {
-            field = GroupShape.class.getDeclaredField("surfaces");
+            field = GroupSurface.class.getDeclaredField("surfaces");
             field.setAccessible(true);
         } catch (NoSuchFieldException e) {
-            throw new IllegalStateException("GroupShape no longer keeps its children in a field named surfaces", e);
+            throw new IllegalStateException("GroupSurface no longer keeps its children in a field named surfaces", e);
         }
         forEachSurface(root, s -> {
-            if (s instanceof GroupShape) {
+            if (s instanceof GroupSurface) {
                 try {
                     ((List<Surface>) field.get(s)).replaceAll(replacement);
                 } catch (IllegalAccessException e) {

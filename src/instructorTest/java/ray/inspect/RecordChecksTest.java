@@ -16,7 +16,7 @@ import ray.math.Vec3;
 import ray.scene.Scene;
 import ray.shading.Lambertian;
 import ray.shading.Light;
-import ray.surface.SphereShape;
+import ray.surface.SphereSurface;
 import ray.surface.Surface;
 
 /**
@@ -135,7 +135,7 @@ public class RecordChecksTest {
     }
 
     /** A sphere that reports the larger root of the quadratic, where the ray leaves it; or the smaller, as it should. */
-    private static final class RootSphere extends SphereShape {
+    private static final class RootSphere extends SphereSurface {
         private final boolean far;
 
         RootSphere(boolean far) {

@@ -11,7 +11,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.surface.Sphere;
-import ray.surface.RoundShape;
+import ray.surface.SphereSurface;
 
 /**
  * NaN or infinite values in the ray (origin, direction, start, end) or the sphere (center, and the
@@ -106,7 +106,7 @@ public class SphereNonFiniteInputTest {
         Sphere sphere = new Sphere();
         sphere.setCenter(center);
         try {
-            Field field = RoundShape.class.getDeclaredField("radius");
+            Field field = SphereSurface.class.getDeclaredField("radius");
             field.setAccessible(true);
             field.setDouble(sphere, radius);
         } catch (ReflectiveOperationException e) {

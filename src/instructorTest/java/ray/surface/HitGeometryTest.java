@@ -78,8 +78,8 @@ public class HitGeometryTest {
     }
 
     /** A triangle, hit wherever a ray comes from at {@code local} (in its own coordinates) with normal +z. */
-    private static TriangleShape fixedHitTriangle(Vec3 v0, Vec3 v1, Vec3 v2, Vec3 local) {
-        return new TriangleShape(v0, v1, v2, v(0, 0, 1), v(0, 0, 1), v(0, 0, 1)) {
+    private static TriangleSurface fixedHitTriangle(Vec3 v0, Vec3 v1, Vec3 v2, Vec3 local) {
+        return new TriangleSurface(v0, v1, v2, v(0, 0, 1), v(0, 0, 1), v(0, 0, 1)) {
             @Override
             public boolean intersect(IntersectionRecord out, Ray ray) {
                 out.t = 1;
@@ -94,7 +94,7 @@ public class HitGeometryTest {
     @Test
     public void geometryOfATransformedHitIsMadeInThePrimitivesCoordinatesAndMappedOut() {
         // Triangle (0,0,0), (1,0,0), (0,1,1): face normal (1,0,0) × (0,1,1) = (0, −1, 1)/√2.
-        TriangleShape triangle = fixedHitTriangle(v(0, 0, 0), v(1, 0, 0), v(0, 1, 1), v(0.25, 0.25, 0.25));
+        TriangleSurface triangle = fixedHitTriangle(v(0, 0, 0), v(1, 0, 0), v(0, 1, 1), v(0.25, 0.25, 0.25));
         // Scale z by 2, then move by (10, 20, 30).
         Affine toWorld = Affine.translation(v(10, 20, 30)).after(Affine.scale(v(1, 1, 2)));
         Surface placed = new Transformed(triangle, toWorld);
@@ -126,7 +126,7 @@ public class HitGeometryTest {
     @Test
     public void aPrimitiveReusedUnderTwoTransformsIsMeasuredOnThePathThatHit() {
         // One triangle placed twice, at x + 100 and at x − 100 (a named group used twice).
-        TriangleShape triangle = fixedHitTriangle(v(0, 0, 0), v(1, 0, 0), v(0, 1, 0), v(0.25, 0.25, 0));
+        TriangleSurface triangle = fixedHitTriangle(v(0, 0, 0), v(1, 0, 0), v(0, 1, 0), v(0.25, 0.25, 0));
         Group root = new Group();
         root.addSurface(new Transformed(triangle, Affine.translation(v(100, 0, 0))));
         root.addSurface(new Transformed(triangle, Affine.translation(v(-100, 0, 0))));

@@ -53,8 +53,8 @@ public class MeshTest {
         Mesh mesh = mesh(NORMALS, new int[] {0, 1, 1, 0, 1, 2});
         Triangle first = (Triangle) mesh.children().get(0);
         Triangle second = (Triangle) mesh.children().get(1);
-        assertTrue(first.hasVertexNormals());
-        assertTrue(second.hasVertexNormals());
+        assertTrue(TriangleFacts.hasVertexNormals(first));
+        assertTrue(TriangleFacts.hasVertexNormals(second));
         // At a vertex the blend is that vertex's normal: face 1's v1 (β = 1) and v2 (γ = 1) use normals 1 and 2.
         assertVec(v(0.6, 0, 0.8), second.normalAt(1, 0), TOL);
         assertVec(v(0, 0.6, 0.8), second.normalAt(0, 1), TOL);
@@ -64,9 +64,9 @@ public class MeshTest {
     @Test
     public void faceWithNormalIndexMinusOneIsFlat() {
         Mesh mesh = mesh(NORMALS, new int[] {0, 1, 1, -1, -1, -1});
-        assertTrue(((Triangle) mesh.children().get(0)).hasVertexNormals());
+        assertTrue(TriangleFacts.hasVertexNormals((Triangle) mesh.children().get(0)));
         Triangle flat = (Triangle) mesh.children().get(1);
-        assertFalse(flat.hasVertexNormals());
+        assertFalse(TriangleFacts.hasVertexNormals(flat));
         assertVec(v(0, 0, 1), flat.normalAt(0.25, 0.5), 0);
     }
 

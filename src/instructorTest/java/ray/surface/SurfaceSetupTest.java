@@ -50,10 +50,10 @@ public class SurfaceSetupTest {
     @Test
     public void vertexNormalsAreKeptOnlyWhenGiven() {
         Triangle flat = new Triangle(v(0, 0, 2), v(4, 0, 2), v(0, 2, 2));
-        assertFalse(flat.hasVertexNormals());
+        assertFalse(TriangleFacts.hasVertexNormals(flat));
         assertEquals("a flat triangle's normal is its face normal", flat.getFaceNormal(), flat.normalAt(0.25, 0.25));
         Triangle smooth = new Triangle(v(0, 0, 2), v(4, 0, 2), v(0, 2, 2), v(0, 0, 1), v(1, 0, 0), v(0, 1, 0));
-        assertTrue(smooth.hasVertexNormals());
+        assertTrue(TriangleFacts.hasVertexNormals(smooth));
         // β = γ = 0.25: 0.5(0,0,1) + 0.25(1,0,0) + 0.25(0,1,0) = (0.25, 0.25, 0.5), length √0.375.
         double len = Math.sqrt(0.375);
         assertVec(v(0.25 / len, 0.25 / len, 0.5 / len), smooth.normalAt(0.25, 0.25), 1e-15);

@@ -2,7 +2,7 @@ package ray.inspect;
 
 import ray.Ray;
 import ray.math.Vec3;
-import ray.surface.TriangleShape;
+import ray.surface.TriangleSurface;
 
 /**
  * Whether a ray a triangle's test missed passes within rounding of one of its edges. There the
@@ -23,7 +23,7 @@ final class EdgeGraze {
      * The edge of {@code triangle} that {@code ray} (in the triangle's coordinates) passes within
      * rounding of, inside its segment, as "v1–v2", or null when it passes none.
      */
-    static String edge(TriangleShape triangle, Ray ray) {
+    static String edge(TriangleSurface triangle, Ray ray) {
         Vec3 a = triangle.getV0();
         Vec3 e1 = a.minus(triangle.getV1());
         Vec3 e2 = a.minus(triangle.getV2());
@@ -54,9 +54,9 @@ final class EdgeGraze {
 
     /** The edge a missed primitive's ray grazes, or null (also for a hit, or a primitive that is no triangle). */
     static String ofMiss(ProbeNode p) {
-        if (p.test == null || p.test.hit || p.test.failure != null || !(p.surface instanceof TriangleShape)) {
+        if (p.test == null || p.test.hit || p.test.failure != null || !(p.surface instanceof TriangleSurface)) {
             return null;
         }
-        return edge((TriangleShape) p.surface, p.ray);
+        return edge((TriangleSurface) p.surface, p.ray);
     }
 }

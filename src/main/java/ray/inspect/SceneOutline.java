@@ -17,7 +17,7 @@ import ray.scene.Scene;
 import ray.shading.Light;
 import ray.surface.Sketch;
 import ray.surface.Surface;
-import ray.surface.TriangleShape;
+import ray.surface.TriangleSurface;
 
 /**
  * The scene as the explore page draws it (top and side views): the camera, the lights, and every
@@ -120,11 +120,11 @@ final class SceneOutline {
         }
 
         @Override
-        public void mesh(List<? extends TriangleShape> triangles, Affine toWorld) {
+        public void mesh(List<? extends TriangleSurface> triangles, Affine toWorld) {
             JsonObject o = entry("mesh", name);
             JsonArray list = new JsonArray();
             for (int k = 0; k < triangles.size() && k < MAX_TRIANGLES; k++) {
-                TriangleShape t = triangles.get(k);
+                TriangleSurface t = triangles.get(k);
                 list.add(vertices(toWorld.applyToPoint(t.getV0()), toWorld.applyToPoint(t.getV1()), toWorld.applyToPoint(t.getV2())));
             }
             o.add("triangles", list);

@@ -20,9 +20,10 @@ import ray.math.Vec3;
  * lands one row higher everywhere: the two differ by one row at every v, not only at the edges.
  * Rounding down with Math.floor instead of the cast is as right: it differs only where the value
  * rounded is negative, by one texel, which a clamp removes and the tests accept.
- * {@link #texel(int, int)} reads a texel by that column and row.
+ * {@link #texel(int, int)} reads a texel by that column and row. (What the framework asks of a
+ * texture besides, its check and its color at a hit, is in {@link FrameworkTexture}.)
  */
-public abstract class Texture {
+public abstract class Texture implements FrameworkTexture {
     /**
      * The texels, each the file's 8-bit color / 255; set by setImage. {@code image.get(i, j)} counts j
      * from the bottom, as rendered images do; lookups use {@link #texel(int, int)}, which counts rows
@@ -45,13 +46,6 @@ public abstract class Texture {
 
     public Image getImage() {
         return image;
-    }
-
-    /** Checks that an image was given. */
-    public void complete() {
-        if (image == null) {
-            throw new IllegalArgumentException("no <image> is given; expected <image> with the path of an image file");
-        }
     }
 
     /**
@@ -77,14 +71,6 @@ public abstract class Texture {
      * give some texel of the image.
      */
     public abstract Vec3 getTexColor(double u, double v);
-
-    /**
-     * The texture's color at a hit. The coordinates are rounded to float first, as the course's
-     * renderer passes them, so that a coordinate at a texel's edge rounds the same way here.
-     */
-    public final Vec3 colorAt(IntersectionRecord hit) {
-        return getTexColor((float) hit.texU, (float) hit.texV);
-    }
 
     @Override
     public String toString() {

@@ -187,7 +187,7 @@ public class Box extends TriangleSet implements WarnsOnLoad {
 
     @Override
     public String describe(DoubleFunction<String> number) {
-        return "Box " + vec(getMinPt(), number) + " to " + vec(getMaxPt(), number);
+        return "Box " + ShapeFacts.vec(getMinPt(), number) + " to " + ShapeFacts.vec(getMaxPt(), number);
     }
 
     /** "triangle #8 (+y face)": a box's triangle with the face it belongs to. */

@@ -7,9 +7,9 @@ import ray.math.Vec3;
 /**
  * Extra credit: a capped cylinder along +y. Its bottom cap is centered at {@code center}, its top
  * cap {@code height} above it, and its side is {@code radius} from the axis (all kept by
- * CylinderShape).
+ * CylinderSurface).
  */
-public class Cylinder extends CylinderShape {
+public class Cylinder extends CylinderSurface {
 
     public Cylinder() {
     }

@@ -3,8 +3,8 @@ package ray.surface;
 import ray.IntersectionRecord;
 import ray.Ray;
 
-/** A list of surfaces (GroupShape's {@code surfaces}, in the scene's order), hit by the closest of them. */
-public class Group extends GroupShape {
+/** A list of surfaces (GroupSurface's {@code surfaces}, in the scene's order), hit by the closest of them. */
+public class Group extends GroupSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         // TODO(Task 4): find the closest hit among this group's surfaces.

@@ -84,6 +84,6 @@ public class Mesh extends TriangleSet {
     @Override
     public String describe(DoubleFunction<String> number) {
         Path file = getData() == null ? null : getData().source;
-        return "Mesh " + (file != null ? ShortPaths.of(file) + " " : "") + "(" + count(children().size(), "triangle") + ")";
+        return "Mesh " + (file != null ? ShortPaths.of(file) + " " : "") + "(" + ShapeFacts.count(children().size(), "triangle") + ")";
     }
 }

@@ -22,7 +22,7 @@ public interface Sketch {
     void triangle(Vec3 a, Vec3 b, Vec3 c);
 
     /** Triangles drawn as one shape (a mesh, a turned box), each mapped to the world by {@code toWorld}. */
-    void mesh(List<? extends TriangleShape> triangles, Affine toWorld);
+    void mesh(List<? extends TriangleSurface> triangles, Affine toWorld);
 
     /** A surface's parts, each sketched and named in turn, in the coordinates {@code toWorld} maps from. */
     void parts(Surface whole, Affine toWorld);

@@ -4,8 +4,8 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 
-/** A sphere: the points at distance {@code radius} from {@code center} (both kept by SphereShape). */
-public class Sphere extends SphereShape {
+/** A sphere: the points at distance {@code radius} from {@code center} (both kept by SphereSurface). */
+public class Sphere extends SphereSurface {
 
     public Sphere() {
     }

@@ -5,8 +5,8 @@ package ray.surface;
  * renderer's pixel-kind record tells apart, each with the student task whose code found it. A mesh's
  * or a box's triangles are triangles, and a primitive inside a transformed group is that primitive
  * (a hit's {@code surface} is always the primitive itself). Each primitive says its kind
- * ({@link Surface#kind()}): the shapes the framework gives each task ({@link SphereShape},
- * {@link TriangleShape}, {@link CylinderShape}) say theirs, so a student's class, or any variant of
+ * ({@link Surface#kind()}): the shapes the framework gives each task ({@link SphereSurface},
+ * {@link TriangleSurface}, {@link CylinderSurface}) say theirs, so a student's class, or any variant of
  * it, is recognized whatever class loader made it.
  *
  * <p>The declaration order is the order of preference where counts tie: a surface before the

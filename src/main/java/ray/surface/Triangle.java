@@ -6,11 +6,11 @@ import ray.math.Vec3;
 
 /**
  * A triangle with vertices v0, v1, v2 (kept, with any vertex normals and texture coordinates
- * vt0, vt1, vt2, by TriangleShape). Its
+ * vt0, vt1, vt2, by TriangleSurface). Its
  * geometric normal is normalize((v1 − v0) × (v2 − v0)); normalAt(beta, gamma) is the normal to
  * report, the blend of the vertex normals when a mesh gives them.
  */
-public class Triangle extends TriangleShape {
+public class Triangle extends TriangleSurface {
 
     public Triangle() {
     }

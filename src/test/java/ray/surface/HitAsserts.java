@@ -41,12 +41,12 @@ public final class HitAsserts {
     /** The hit intersect already reported into {@code out} must be at t (within tolerance). */
     public static void assertT(String what, Surface surface, IntersectionRecord out, Ray ray, double t, double tolerance) {
         if (differ(t, out.t, tolerance)) {
-            fail(line(what, hitAt(t), returned(out, surface instanceof TriangleShape), HitHints.forWrongT(surface, ray, t, out.t)));
+            fail(line(what, hitAt(t), returned(out, surface instanceof TriangleSurface), HitHints.forWrongT(surface, ray, t, out.t)));
         }
     }
 
     /** intersect must report a hit at t (within tTolerance) with β and γ (each within bgTolerance). */
-    public static void assertHitAt(String what, TriangleShape triangle, IntersectionRecord out, Ray ray, double t, double tTolerance,
+    public static void assertHitAt(String what, TriangleSurface triangle, IntersectionRecord out, Ray ray, double t, double tTolerance,
             double beta, double gamma, double bgTolerance) {
         String expected = hitAt(t, beta, gamma);
         if (!triangle.intersect(out, ray)) {
@@ -68,7 +68,7 @@ public final class HitAsserts {
     /** intersect must report a miss (whether the record is left alone is Records.assertUntouched's to judge). */
     public static void assertMiss(String what, Surface surface, IntersectionRecord out, Ray ray) {
         if (surface.intersect(out, ray)) {
-            fail(line(what, "a miss", returnedTrue(out, surface instanceof TriangleShape), HitHints.forUnexpectedHit(surface, ray, out)));
+            fail(line(what, "a miss", returnedTrue(out, surface instanceof TriangleSurface), HitHints.forUnexpectedHit(surface, ray, out)));
         }
     }
 

@@ -23,8 +23,8 @@ public final class HitHints {
     /** Why a hit came back at {@code actual} instead of {@code expected}, or null when the numbers do not say. */
     public static String forWrongT(Surface surface, Ray ray, double expected, double actual) {
         // The sphere's other root is the more telling name, even outside the segment.
-        if (surface instanceof SphereShape) {
-            String root = otherRoot((SphereShape) surface, ray, expected, actual);
+        if (surface instanceof SphereSurface) {
+            String root = otherRoot((SphereSurface) surface, ray, expected, actual);
             if (root != null) {
                 return root;
             }
@@ -46,7 +46,7 @@ public final class HitHints {
         if (!(ray.start < out.t && out.t < ray.end)) {
             return outsideTheSegment(surface, ray, out.t);
         }
-        if (surface instanceof TriangleShape) {
+        if (surface instanceof TriangleSurface) {
             return outsideTheTriangle(out.beta, out.gamma);
         }
         return null;
@@ -89,7 +89,7 @@ public final class HitHints {
     }
 
     /** Names the root {@code actual} is when the sphere's two roots are {@code expected} and {@code actual}. */
-    private static String otherRoot(SphereShape sphere, Ray ray, double expected, double actual) {
+    private static String otherRoot(SphereSurface sphere, Ray ray, double expected, double actual) {
         Vec3 d = ray.direction;
         Vec3 f = ray.origin.minus(sphere.getCenter());
         double a = d.dot(d);

@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Known wrong: tests the side without its height limits, so the side runs forever above and below the caps. */
-public class Cylinder extends CylinderShape {
+public class Cylinder extends CylinderSurface {
     public Cylinder() {
     }
 

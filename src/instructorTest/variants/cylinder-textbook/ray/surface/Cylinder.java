@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** The textbook way: (−b ∓ √(b² − 4ac))/2a for the side, one plane per cap, the least t kept in a local. */
-public class Cylinder extends CylinderShape {
+public class Cylinder extends CylinderSurface {
     public Cylinder() {
     }
 

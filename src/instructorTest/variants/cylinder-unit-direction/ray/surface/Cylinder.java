@@ -8,7 +8,7 @@ import ray.math.Vec3;
  * Works along the unit direction (distances s = t·|d|), caps before the side, and the side's
  * normal from the hit point minus the axis point at its height, normalized.
  */
-public class Cylinder extends CylinderShape {
+public class Cylinder extends CylinderSurface {
     public Cylinder() {
     }
 

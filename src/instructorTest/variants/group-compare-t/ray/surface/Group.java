@@ -4,7 +4,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 
 /** No shortened ray: every child is tested on the whole segment and the smallest t kept (ties keep the first). */
-public class Group extends GroupShape {
+public class Group extends GroupSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         IntersectionRecord closest = null;

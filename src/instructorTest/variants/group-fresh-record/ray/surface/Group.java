@@ -4,7 +4,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 
 /** A fresh record per child, the best one kept, and out.set(best) at the end. */
-public class Group extends GroupShape {
+public class Group extends GroupSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         IntersectionRecord best = null;

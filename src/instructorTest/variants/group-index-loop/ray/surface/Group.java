@@ -4,7 +4,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 
 /** An index loop that builds a new, shorter ray for each child from the closest t so far. */
-public class Group extends GroupShape {
+public class Group extends GroupSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         double closest = ray.end;

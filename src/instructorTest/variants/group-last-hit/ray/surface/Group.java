@@ -4,7 +4,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 
 /** Known wrong: keeps the closest hit, but returns whether the last child it tried was hit, not whether any was. */
-public class Group extends GroupShape {
+public class Group extends GroupSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         Ray closestSoFar = ray.copy();

@@ -4,7 +4,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 
 /** Ray Tracing in One Weekend's hittable_list: a temporary record, its fields copied into out on each closer hit. */
-public class Group extends GroupShape {
+public class Group extends GroupSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         IntersectionRecord temp = new IntersectionRecord();

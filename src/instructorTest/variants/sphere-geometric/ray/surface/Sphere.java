@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** The lecture's geometric test: unit direction, closest approach, t rescaled to the ray's own direction. */
-public class Sphere extends SphereShape {
+public class Sphere extends SphereSurface {
     public Sphere() {
     }
 

@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Ray Tracing in One Weekend's form: b = 2h, so disc/4 = h² − ac and the roots are (−h ∓ √(h² − ac))/a. */
-public class Sphere extends SphereShape {
+public class Sphere extends SphereSurface {
     public Sphere() {
     }
 

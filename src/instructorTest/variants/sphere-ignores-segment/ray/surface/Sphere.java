@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Known wrong: takes the near root (−b − √disc)/2a without checking it against ray.start and ray.end, so hits behind the ray's start count (a shadow ray is blocked by what lies behind the point). */
-public class Sphere extends SphereShape {
+public class Sphere extends SphereSurface {
     public Sphere() {
     }
 

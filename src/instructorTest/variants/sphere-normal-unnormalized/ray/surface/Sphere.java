@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Known wrong: gives the normal as hit − center without dividing by the radius, so it is r long and a sphere of radius r is shaded r times too bright or too dark. */
-public class Sphere extends SphereShape {
+public class Sphere extends SphereSurface {
     public Sphere() {
     }
 

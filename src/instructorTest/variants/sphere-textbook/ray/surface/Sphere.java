@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** The textbook quadratic: b² − 4ac, roots (−b ∓ √disc)/2a. */
-public class Sphere extends SphereShape {
+public class Sphere extends SphereSurface {
     public Sphere() {
     }
 

@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Known wrong: assumes the ray's direction has unit length (a = 1 instead of d·d), so t is off for any other direction. */
-public class Sphere extends SphereShape {
+public class Sphere extends SphereSurface {
     public Sphere() {
     }
 

@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** The plane first, then barycentrics as ratios of signed areas (cross products against the normal). */
-public class Triangle extends TriangleShape {
+public class Triangle extends TriangleSurface {
     public Triangle() {
     }
 

@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Cramer's rule with Shirley and Marschner's a…l (Fundamentals of Computer Graphics §4.4.2), early exits in their order. */
-public class Triangle extends TriangleShape {
+public class Triangle extends TriangleSurface {
     public Triangle() {
     }
 

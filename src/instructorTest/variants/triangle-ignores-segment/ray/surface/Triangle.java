@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Known wrong: Cramer's rule without the check of t against ray.start and ray.end, so hits behind the ray's start (and past a shadow ray's light) count. */
-public class Triangle extends TriangleShape {
+public class Triangle extends TriangleSurface {
     public Triangle() {
     }
 

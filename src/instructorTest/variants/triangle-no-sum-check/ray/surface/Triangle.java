@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Known wrong: checks beta ≥ 0 and gamma ≥ 0 but not beta + gamma ≤ 1 (hits a parallelogram). */
-public class Triangle extends TriangleShape {
+public class Triangle extends TriangleSurface {
     public Triangle() {
     }
 

@@ -5,7 +5,7 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /** Cramer's rule written with vectors: each determinant a triple product A·(B × C). */
-public class Triangle extends TriangleShape {
+public class Triangle extends TriangleSurface {
     public Triangle() {
     }
 

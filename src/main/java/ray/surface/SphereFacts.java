@@ -7,11 +7,13 @@ import ray.math.Affine;
 import ray.math.Bounds;
 import ray.math.Vec3;
 
-/**
- * A sphere's data and everything about it but the ray test, which the student's {@link Sphere}
- * adds: the points at distance {@code radius} from {@code center}.
- */
-public abstract class SphereShape extends RoundShape {
+/** What the framework knows of a sphere ({@link SphereSurface}) besides its ray test. */
+final class SphereFacts implements ShapeFacts {
+    static final SphereFacts FACTS = new SphereFacts();
+
+    private SphereFacts() {
+    }
+
     /**
      * The hit re-projected to center + radius·(unit direction to the hit), and the coordinates'
      * scale max|center| + radius. The reported normal is kept as the geometric normal, since shaders
@@ -20,7 +22,10 @@ public abstract class SphereShape extends RoundShape {
      * is not along the radius at all is replaced.
      */
     @Override
-    public HitGeometry hitGeometry(IntersectionRecord hit) {
+    public HitGeometry hitGeometry(Surface s, IntersectionRecord hit) {
+        SphereSurface sphere = (SphereSurface) s;
+        Vec3 center = sphere.center;
+        double radius = sphere.radius;
         Vec3 p = hit.location;
         Vec3 reported = hit.normal == null ? Vec3.ZERO : hit.normal.normalized();
         Vec3 outward = p.minus(center).normalized();
@@ -43,13 +48,23 @@ public abstract class SphereShape extends RoundShape {
 
     /** The cube about the center with half-side |radius|. */
     @Override
-    public Bounds bounds() {
-        return Bounds.around(center, radius);
+    public Bounds bounds(Surface s) {
+        SphereSurface sphere = (SphereSurface) s;
+        return Bounds.around(sphere.center, sphere.radius);
+    }
+
+    /** A copy with its center moved into the frame whose origin is {@code origin}. */
+    @Override
+    public Surface inFrameAt(Surface s, Vec3 origin) {
+        SphereSurface moved = (SphereSurface) s.shallowCopy();
+        moved.center = ((SphereSurface) s).center.minus(origin);
+        return moved;
     }
 
     @Override
-    public String toString() {
-        return "Sphere[center " + center + ", radius " + radius + "]";
+    public String name(Surface s) {
+        SphereSurface sphere = (SphereSurface) s;
+        return "Sphere[center " + sphere.center + ", radius " + sphere.radius + "]";
     }
 
     @Override
@@ -58,8 +73,9 @@ public abstract class SphereShape extends RoundShape {
     }
 
     @Override
-    public String describe(DoubleFunction<String> number) {
-        return "Sphere center " + vec(center, number) + ", radius " + number.apply(radius);
+    public String describe(Surface s, DoubleFunction<String> number) {
+        SphereSurface sphere = (SphereSurface) s;
+        return "Sphere center " + ShapeFacts.vec(sphere.center, number) + ", radius " + number.apply(sphere.radius);
     }
 
     /**
@@ -68,7 +84,10 @@ public abstract class SphereShape extends RoundShape {
      * moved by a transform), so that the eye's place can be compared with the center.
      */
     @Override
-    public String doubtAbout(IntersectionRecord hit, Ray ray) {
+    public String doubtAbout(Surface s, IntersectionRecord hit, Ray ray) {
+        SphereSurface sphere = (SphereSurface) s;
+        Vec3 center = sphere.center;
+        double radius = sphere.radius;
         boolean onTheSphere = Math.abs(hit.location.minus(center).length() - radius) <= 1e-6 * (radius + center.length());
         boolean outside = ray.origin.minus(center).length() > radius;
         if (!onTheSphere || !outside || !(hit.normal.dot(ray.direction) > 0)) {
@@ -80,11 +99,12 @@ public abstract class SphereShape extends RoundShape {
 
     /** A sphere that is only moved stays a sphere; one turned or scaled is drawn as its bounding box. */
     @Override
-    public void sketch(Sketch sketch, Affine toWorld) {
+    public void sketch(Surface s, Sketch sketch, Affine toWorld) {
+        SphereSurface sphere = (SphereSurface) s;
         if (toWorld.isTranslation()) {
-            sketch.sphere(toWorld.applyToPoint(center), radius);
+            sketch.sphere(toWorld.applyToPoint(sphere.center), sphere.radius);
         } else {
-            super.sketch(sketch, toWorld);
+            ShapeFacts.super.sketch(s, sketch, toWorld);
         }
     }
 }

@@ -5,21 +5,11 @@ import ray.math.Affine;
 import ray.math.Bounds;
 import ray.math.Vec3;
 
-/**
- * A capped cylinder's data and everything about it but the ray test, which the student's
- * {@link Cylinder} adds (extra credit): the solid whose bottom cap is the disc of {@code radius}
- * about {@code center} in the plane y = center.y, rising along +y by {@code height}. Any other
- * orientation is a {@code <rotate>} away, as for every surface.
- */
-public abstract class CylinderShape extends RoundShape {
-    protected double height = 1.0;
+/** What the framework knows of a capped cylinder ({@link CylinderSurface}) besides its ray test. */
+final class CylinderFacts implements ShapeFacts {
+    static final CylinderFacts FACTS = new CylinderFacts();
 
-    public double getHeight() {
-        return height;
-    }
-
-    public void setHeight(double height) {
-        this.height = positive("height", height);
+    private CylinderFacts() {
     }
 
     /**
@@ -30,7 +20,11 @@ public abstract class CylinderShape extends RoundShape {
      * radius and the height.
      */
     @Override
-    public HitGeometry hitGeometry(IntersectionRecord hit) {
+    public HitGeometry hitGeometry(Surface s, IntersectionRecord hit) {
+        CylinderSurface cylinder = (CylinderSurface) s;
+        Vec3 center = cylinder.center;
+        double radius = cylinder.radius;
+        double height = cylinder.height;
         Vec3 p = hit.location;
         Vec3 normal = hit.normal == null ? Vec3.ZERO : hit.normal.normalized();
         double scale = center.maxAbs() + radius + height;
@@ -57,15 +51,25 @@ public abstract class CylinderShape extends RoundShape {
 
     /** From the bottom cap's square to the top cap's. */
     @Override
-    public Bounds bounds() {
-        double r = Math.abs(radius);
-        return new Bounds(center.x - r, Math.min(center.y, center.y + height), center.z - r,
-                center.x + r, Math.max(center.y, center.y + height), center.z + r);
+    public Bounds bounds(Surface s) {
+        CylinderSurface c = (CylinderSurface) s;
+        double r = Math.abs(c.radius);
+        return new Bounds(c.center.x - r, Math.min(c.center.y, c.center.y + c.height), c.center.z - r,
+                c.center.x + r, Math.max(c.center.y, c.center.y + c.height), c.center.z + r);
+    }
+
+    /** A copy with its center moved into the frame whose origin is {@code origin}. */
+    @Override
+    public Surface inFrameAt(Surface s, Vec3 origin) {
+        CylinderSurface moved = (CylinderSurface) s.shallowCopy();
+        moved.center = ((CylinderSurface) s).center.minus(origin);
+        return moved;
     }
 
     @Override
-    public String toString() {
-        return "Cylinder[center " + center + ", radius " + radius + ", height " + height + "]";
+    public String name(Surface s) {
+        CylinderSurface c = (CylinderSurface) s;
+        return "Cylinder[center " + c.center + ", radius " + c.radius + ", height " + c.height + "]";
     }
 
     @Override
@@ -79,11 +83,12 @@ public abstract class CylinderShape extends RoundShape {
      * bounding box.
      */
     @Override
-    public void sketch(Sketch sketch, Affine toWorld) {
+    public void sketch(Surface s, Sketch sketch, Affine toWorld) {
+        CylinderSurface c = (CylinderSurface) s;
         if (toWorld.isTranslation()) {
-            sketch.cylinder(toWorld.applyToPoint(center.plus(new Vec3(0, height / 2, 0))), radius, height);
+            sketch.cylinder(toWorld.applyToPoint(c.center.plus(new Vec3(0, c.height / 2, 0))), c.radius, c.height);
         } else {
-            super.sketch(sketch, toWorld);
+            ShapeFacts.super.sketch(s, sketch, toWorld);
         }
     }
 }
