@@ -26,7 +26,7 @@ final class TextureReport {
         Image image = texture.getImage();
         int w = image.width();
         int h = image.height();
-        // The lookup takes float coordinates (Texture.colorAt), so the texel follows from these.
+        // The lookup takes float coordinates (FrameworkTexture.colorAt), so the texel follows from these.
         float u = (float) hit.texU;
         float v = (float) hit.texV;
         out.println(Fmt.row(in, "texture", texture + ", whose color at (u, v) replaces kd"));
