@@ -1,6 +1,7 @@
 package ray.camera;
 
 import ray.Ray;
+import ray.math.PositiveNumber;
 import ray.math.Vec3;
 
 /**
@@ -42,11 +43,11 @@ public abstract class Camera implements FrameworkCamera, Cloneable {
     }
 
     public void setViewWidth(double viewWidth) {
-        this.viewWidth = CameraFacts.positive("viewWidth", viewWidth);
+        this.viewWidth = PositiveNumber.require("viewWidth", viewWidth);
     }
 
     public void setViewHeight(double viewHeight) {
-        this.viewHeight = CameraFacts.positive("viewHeight", viewHeight);
+        this.viewHeight = PositiveNumber.require("viewHeight", viewHeight);
     }
 
     public Vec3 getViewPoint() {

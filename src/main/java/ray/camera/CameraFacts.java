@@ -44,12 +44,4 @@ final class CameraFacts {
         moved.complete();
         return moved;
     }
-
-    /** {@code value}, checked to be a positive finite number (the scene file's one-line error otherwise). */
-    static double positive(String name, double value) {
-        if (!(value > 0) || Double.isInfinite(value)) {
-            throw new IllegalArgumentException(name + " is " + value + "; expected a positive number");
-        }
-        return value;
-    }
 }

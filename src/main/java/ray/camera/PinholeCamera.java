@@ -1,5 +1,7 @@
 package ray.camera;
 
+import ray.math.PositiveNumber;
+
 /**
  * A pinhole camera's data and everything about it but the ray, which the student's
  * {@link PerspectiveCamera} adds: every ray starts at viewPoint and passes through the image plane,
@@ -10,7 +12,7 @@ public abstract class PinholeCamera extends Camera {
     protected double projDistance = 1.0;
 
     public void setProjDistance(double projDistance) {
-        this.projDistance = CameraFacts.positive("projDistance", projDistance);
+        this.projDistance = PositiveNumber.require("projDistance", projDistance);
     }
 
     public double getProjDistance() {

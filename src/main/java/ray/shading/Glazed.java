@@ -21,10 +21,7 @@ public class Glazed extends Shader {
     private Shader substrate = new Lambertian();
 
     public void setRefractiveIndex(double refractiveIndex) {
-        if (!(refractiveIndex > 0) || Double.isInfinite(refractiveIndex)) {
-            throw new IllegalArgumentException("refractiveIndex is " + refractiveIndex + "; expected a positive number");
-        }
-        this.refractiveIndex = refractiveIndex;
+        this.refractiveIndex = ray.math.PositiveNumber.require("refractiveIndex", refractiveIndex);
     }
 
     public double getRefractiveIndex() {

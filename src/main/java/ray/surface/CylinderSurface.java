@@ -1,5 +1,6 @@
 package ray.surface;
 
+import ray.math.PositiveNumber;
 import ray.math.Vec3;
 
 /**
@@ -27,7 +28,7 @@ public abstract class CylinderSurface extends Surface {
 
     /** @throws IllegalArgumentException unless the radius is a positive finite number */
     public void setRadius(double radius) {
-        this.radius = ShapeFacts.positive("radius", radius);
+        this.radius = PositiveNumber.require("radius", radius);
     }
 
     public double getHeight() {
@@ -36,6 +37,6 @@ public abstract class CylinderSurface extends Surface {
 
     /** @throws IllegalArgumentException unless the height is a positive finite number */
     public void setHeight(double height) {
-        this.height = ShapeFacts.positive("height", height);
+        this.height = PositiveNumber.require("height", height);
     }
 }

@@ -145,14 +145,6 @@ interface ShapeFacts {
         return p == null ? "null" : p.format(number);
     }
 
-    /** {@code value}, checked to be a positive finite number (the scene file's one-line error otherwise). */
-    static double positive(String name, double value) {
-        if (!(value > 0) || Double.isInfinite(value)) {
-            throw new IllegalArgumentException(name + " is " + value + "; expected a positive number");
-        }
-        return value;
-    }
-
     /** "12 triangles", "1 surface". */
     static String count(int n, String noun) {
         return n + " " + noun + (n == 1 ? "" : "s");

@@ -1,5 +1,6 @@
 package ray.surface;
 
+import ray.math.PositiveNumber;
 import ray.math.Vec3;
 
 /**
@@ -25,6 +26,6 @@ public abstract class SphereSurface extends Surface {
 
     /** @throws IllegalArgumentException unless the radius is a positive finite number */
     public void setRadius(double radius) {
-        this.radius = ShapeFacts.positive("radius", radius);
+        this.radius = PositiveNumber.require("radius", radius);
     }
 }
