@@ -119,7 +119,7 @@ public class AdversarialSubmissionsTest {
         Graded graded = grade("forged-frames", Base.STUB, Map.of(SPHERE, probe("ForgeProbe")));
         assertEquals(0, graded.score(), 0);
         assertEquals("every test fails", Boolean.FALSE, passing(graded.tests, name -> true));
-        assertClean(graded, 240, "forged frames and result files (stub)");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "forged frames and result files (stub)");
     }
 
     /**
@@ -133,7 +133,7 @@ public class AdversarialSubmissionsTest {
         assertTrue(graded.outputs(), graded.outputs().contains("unsafe-probe: found []"));
         assertFalse(graded.outputs(), graded.outputs().matches("(?s).*unsafe-probe: found \\[[^\\]].*"));
         assertEquals(0, graded.score(), 0);
-        assertClean(graded, 240, "Unsafe on the grader's classes (stub)");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "Unsafe on the grader's classes (stub)");
     }
 
     /**
@@ -146,7 +146,7 @@ public class AdversarialSubmissionsTest {
         Graded graded = grade("overwrite", Base.STUB, Map.of(SPHERE, both(probe("OverwriteProbe"), throwing("OVERWRITE_REPORT"))));
         assertTrue(graded.outputs(), graded.outputs().matches("(?s).*overwrite-probe: looked at [1-9]\\d* files, changed 0: .*"));
         assertEquals(0, graded.score(), 0);
-        assertClean(graded, 240, "overwrites every input it finds (stub)");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "overwrites every input it finds (stub)");
     }
 
     /**
@@ -169,7 +169,7 @@ public class AdversarialSubmissionsTest {
                 assertTrue(output, output.contains("the class ray.shading.TextureLookups must not be defined there"));
             }
         }
-        assertClean(graded, 240, "top-level classes named like test helpers (stub)");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "top-level classes named like test helpers (stub)");
     }
 
     /**
@@ -182,18 +182,19 @@ public class AdversarialSubmissionsTest {
     public void processesItStartsEndWithTheGrading() throws Exception {
         Graded graded = grade("lingering-processes", Base.STUB, Map.of(SPHERE, probe("LingerProbe")));
         assertEquals(0, graded.score(), 0);
-        assertClean(graded, 240, "detached, stopping, signal-proof children (stub)");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "detached, stopping, signal-proof children (stub)");
     }
 
     /**
      * A stalled worker: the group's code starts the stopping children above (which stop every process
      * of the student's user, the worker too) and then never returns from intersect. The group's first
      * test ends at its own limit, the worker and its children are ended, the group's later tests are
-     * skipped, and every other task keeps its points: the grade ends long before its 60 s limit.
+     * skipped, and every other task keeps its points: the grade ends without its time limit (set to
+     * 300 s here, five times what a loaded machine needs, so that the limit stops nothing but a hang).
      */
     @Test(timeout = 900_000)
     public void aStalledWorkerEndsWithinTheTimeLimitWithThePointsEarnedSoFar() throws Exception {
-        int limit = 60;
+        int limit = 300;
         Graded graded = grade("stalled-worker", Base.SOLUTION, Map.of(GROUP, both(probe("LingerProbe"), source -> insertAfter(source,
                 INTERSECT, "        try {\n            Thread.sleep(Long.MAX_VALUE);\n        } catch (InterruptedException e) {\n"
                         + "            Thread.currentThread().interrupt();\n        }\n"))), Map.of("RAY1_TIME_LIMIT", String.valueOf(limit)));
@@ -223,7 +224,7 @@ public class AdversarialSubmissionsTest {
         assertTrue(graded.outputs(), found.find());
         assertTrue("it read class files out of its memory: " + found.group(), Integer.parseInt(found.group(1)) > 0);
         assertEquals(0, graded.score(), 0);
-        assertClean(graded, 240, "reads /proc/self/mem for classes, gzip+base64 (stub)");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "reads /proc/self/mem for classes, gzip+base64 (stub)");
     }
 
     /**
@@ -285,7 +286,7 @@ public class AdversarialSubmissionsTest {
         double sum = graded.tests.stream().mapToDouble(t -> ((Number) t.get("score")).doubleValue()).sum();
         assertEquals("the score is the tests' points", sum, graded.score(), 1e-9);
         assertEquals("every test passes: the sphere is the solution", Boolean.TRUE, passing(graded.tests, name -> true));
-        assertClean(graded, 240, "detached process writes a fake results.json");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "detached process writes a fake results.json");
     }
 
     /**
@@ -300,7 +301,7 @@ public class AdversarialSubmissionsTest {
         Graded graded = grade("leak", Base.SOLUTION, Map.of(SPHERE, both(probe("LeakProbe"), throwing("leakProbeNext()"))));
         String report = graded.json.contains("leak-probe: ") ? graded.json.split("leak-probe: ")[1].split("\\\\n")[0] : "(none)";
         assertTrue("what the probe found: " + report, report.startsWith("found 0 files, "));
-        assertClean(graded, 240, "disk walk, leak in plain/base64/reversed/hex");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "disk walk, leak in plain/base64/reversed/hex");
     }
 
     /** The finder itself finds a hidden test and a solution class in each encoding the probes use, and nothing in an ordinary message. */
@@ -354,23 +355,29 @@ public class AdversarialSubmissionsTest {
             assertFalse(message, message.contains("scene file") || message.contains("does not load"));
         }
         assertEquals("the other tasks pass", Boolean.TRUE, passing(graded.tests, name -> !name.startsWith("Task 2 ")));
-        assertClean(graded, 240, "static initializer fills the heap");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "static initializer fills the heap");
     }
 
-    /** A loop that never ends in intersect: the sphere's tests fail, every other task keeps its points, in under 2 minutes. */
+    /**
+     * A loop that never ends in intersect: the sphere's tests fail and every other task keeps its
+     * points, in little time: its first test's limit, not the whole grade's (about 35 s on a quiet
+     * machine; the bound is generous, for a loaded one).
+     */
     @Test(timeout = 900_000)
     public void anInfiniteLoopCostsOnlyItsTaskAndLittleTime() throws Exception {
         Graded graded = grade("infinite-loop", Base.SOLUTION, Map.of(SPHERE, source -> insertAfter(source, INTERSECT,
                 "        while (ray != null) {\n            Thread.onSpinWait();\n        }\n")));
         assertEquals("the sphere's tests fail", Boolean.FALSE, passing(graded.tests, name -> name.startsWith("Task 2 ")));
         assertEquals("the other tasks pass", Boolean.TRUE, passing(graded.tests, name -> !name.startsWith("Task 2 ")));
-        assertClean(graded, 120, "infinite loop in intersect");
+        assertFalse("the time limit was not needed", graded.outputs().contains("grading stopped at its time limit"));
+        assertClean(graded, LITTLE_TIME_SECONDS, "infinite loop in intersect");
     }
 
     /**
      * Every student class loops forever in its static initializer, so every task's code never
      * finishes: the worst case a submission can make without slowing each test just under its limit
-     * (which the time limit bounds). It is graded, 0 points, well within PrairieLearn's 150 s.
+     * (which the time limit bounds). It is graded, 0 points, well within PrairieLearn's 150 s on a
+     * quiet machine (docs/instructor.md has the time); the bound here is generous, for a loaded one.
      */
     @Test(timeout = 900_000)
     public void codeThatNeverFinishesInAnyTaskIsGradedWithinThePlatformsLimits() throws Exception {
@@ -381,7 +388,8 @@ public class AdversarialSubmissionsTest {
         Graded graded = grade("every-task-loops", Base.SOLUTION, edits);
         assertEquals("every test fails", Boolean.FALSE, passing(graded.tests, name -> true));
         assertEquals(0.0, graded.score(), 0);
-        assertClean(graded, 150, "every task loops in a static initializer");
+        assertFalse("the time limit was not needed", graded.outputs().contains("grading stopped at its time limit"));
+        assertClean(graded, LITTLE_TIME_SECONDS, "every task loops in a static initializer");
     }
 
     /** A sphere that prints 50 MB and throws 5 MB messages: results.json stays under 1 MB and the other tasks pass. */
@@ -392,7 +400,7 @@ public class AdversarialSubmissionsTest {
                         + "            for (int i = 0; i < 10; i++) {\n                System.out.print(shout);\n            }\n"
                         + "            throw new IllegalStateException(shout);\n        }\n")));
         assertEquals("the other tasks pass", Boolean.TRUE, passing(graded.tests, name -> !name.startsWith("Task 2 ")));
-        assertClean(graded, 240, "prints 50 MB, throws 5 MB messages");
+        assertClean(graded, LOADED_MACHINE_SECONDS, "prints 50 MB, throws 5 MB messages");
     }
 
     /**
@@ -423,8 +431,23 @@ public class AdversarialSubmissionsTest {
             String prefix = "Task " + task + " ";
             assertTrue("task " + task + "'s tests are listed", graded.tests.stream().anyMatch(t -> ((String) t.get("name")).startsWith(prefix)));
         }
-        assertClean(graded, limit + 20, "tasks 2-6 never finish, 25 s time limit");
+        // Soon after the limit: ending the worker and writing results.json, generously for a loaded machine.
+        assertClean(graded, limit + 120, "tasks 2-6 never finish, 25 s time limit");
     }
+
+    /**
+     * How long a grading in these tests may take: a bound on hangs, not on speed. A grade takes 15 to
+     * 40 s on two quiet cores and up to 130 s while another build keeps them busy; what each attack
+     * costs in time on a quiet machine is in the attack table and docs/instructor.md.
+     */
+    private static final double LOADED_MACHINE_SECONDS = 600;
+
+    /**
+     * "Little time" for code that never finishes: well under the 540 s whole-grade limit of the
+     * Gradescope bundle these tests run, so that a loop that cost the whole limit fails, with room
+     * for a loaded machine (such a grade takes 35 to 80 s on two quiet cores).
+     */
+    private static final double LITTLE_TIME_SECONDS = 300;
 
     // ---- Grading through the bundle ----
 

@@ -221,7 +221,7 @@ public class GraderTest {
      * when it is empty. (A System.exit is the test above.) Grading completes with a valid
      * results.json, each bug costs tests of its own task only, and each failure says what happened.
      */
-    @Test(timeout = 900_000)
+    @Test(timeout = 1_800_000)
     @SuppressWarnings("unchecked")
     public void throwingLoopingHoardingAndNaNCodeCostsOnlyTheTestsThatReachIt() throws Exception {
         Path dir = FOLDER.getRoot().toPath().resolve("misbehaving");
@@ -279,7 +279,7 @@ public class GraderTest {
      * A sphere whose every exception carries 5.4 MB of text, on both platforms: each message is cut
      * with "… (cut)", results.json stays under 1 MB, and the grade is the same.
      */
-    @Test(timeout = 900_000)
+    @Test(timeout = 1_800_000)
     @SuppressWarnings("unchecked")
     public void aSubmissionThatShoutsGetsAResultsFileUnderOneMegabyte() throws Exception {
         Path dir = FOLDER.getRoot().toPath().resolve("shouting");

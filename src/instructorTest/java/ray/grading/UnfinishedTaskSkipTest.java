@@ -85,7 +85,7 @@ public class UnfinishedTaskSkipTest {
         return outcomes.stream().collect(Collectors.toMap(t -> t.className().substring(5) + "." + t.method(), Function.identity()));
     }
 
-    @Test(timeout = 120_000)
+    @Test(timeout = 300_000)
     public void aTasksLaterTestsFailAtOnceNamingTheTestThatDidNotFinish() throws Exception {
         long start = System.nanoTime();
         Map<String, TestOutcome> outcomes = run("run");
@@ -99,7 +99,8 @@ public class UnfinishedTaskSkipTest {
             assertTrue(t.message(), t.message().startsWith("[Task 1 (Camera rays)")
                     && t.message().contains("] skipped: your code did not finish in test CameraLoopTest.b_loops,"
                             + " so this task's later tests were not run; make that test finish first"));
-            assertTrue(later + " failed at once: " + t.seconds() + " s", t.seconds() < 0.5);
+            // At once: below the 1 s its own limit would take (it takes milliseconds; the rest is room for a loaded machine).
+            assertTrue(later + " failed at once: " + t.seconds() + " s", t.seconds() < 1);
         }
         assertTrue("another task still runs", outcomes.get("SphereFineTest.passes").passed());
         // A hidden test is not named, not even by its method.
@@ -115,8 +116,9 @@ public class UnfinishedTaskSkipTest {
         assertTrue(outcomes.get("GroupStoppedTest.a_loopsUntilStopped").message().startsWith("stopped after 3 s"));
         assertTrue(outcomes.get("GroupStoppedTest.b_wouldPass").message(), outcomes.get("GroupStoppedTest.b_wouldPass").message()
                 .contains("skipped: your code did not finish in test GroupStoppedTest.a_loopsUntilStopped"));
-        // Three limits of 1 s, one backstop of 3 s and two JVM starts, not a limit per test.
-        assertTrue(seconds + " s", seconds < 30);
+        // Three limits of 1 s, one backstop of 3 s and two JVM starts, not a limit per test: the skips
+        // above say so; this bound only stops a hang, with room for a loaded machine's JVM starts.
+        assertTrue(seconds + " s", seconds < 120);
     }
 
     @Test
