@@ -57,4 +57,14 @@ public class TraceBlameTest {
         assertFalse(out, out.contains("mirrored row"));
         assertTrue(out, out.contains("See TODO(Task 5)"));
     }
+
+    /** The same on the globe scene (its texture named in the scene): pixel (155, 128) reads row 111 for 112. */
+    @Test
+    public void onTheGlobeSceneTheRowOffLookupIsNamedByItsRowToo() throws Exception {
+        String out = VariantTrace.of(Variant.wrong("texture-rows-flipped-after-rounding", 5), folder.getRoot().toPath(),
+                "scenes/textured/globe.xml", 155, 128);
+        assertTrue(out, out.contains("texel        (252, 112) of 512×256"));
+        assertTrue(out, out.contains("that is texel (252, 111), one row above: flipping after the rounding"));
+        assertFalse(out, out.contains("mirrored row"));
+    }
 }
