@@ -20,9 +20,12 @@ final class TriangleFacts implements ShapeFacts {
         return t.n0 != null;
     }
 
-    /** Whether an edge cross product is a usable normal: finite, and not zero or underflowed to zero. */
-    static boolean spansArea(TriangleSurface t) {
-        Vec3 cross = t.v1.minus(t.v0).cross(t.v2.minus(t.v0));
+    /**
+     * Whether an edge cross product (v1 − v0) × (v2 − v0) is a usable normal: finite, and not zero or
+     * underflowed to zero. The one test of a triangle's area, for {@link #complete} and
+     * {@link TriangleSurface#getFaceNormal}.
+     */
+    static boolean spansArea(Vec3 cross) {
         return cross.isFinite() && cross.lengthSquared() > 0;
     }
 
@@ -30,7 +33,7 @@ final class TriangleFacts implements ShapeFacts {
     @Override
     public Surface complete(Surface s) {
         TriangleSurface t = (TriangleSurface) s;
-        t.degenerate = !spansArea(t);
+        t.degenerate = !spansArea(t.v1.minus(t.v0).cross(t.v2.minus(t.v0)));
         return s;
     }
 

@@ -107,7 +107,7 @@ public abstract class TriangleSurface extends Surface {
      */
     public Vec3 getFaceNormal() {
         Vec3 cross = v1.minus(v0).cross(v2.minus(v0));
-        return cross.isFinite() && cross.lengthSquared() > 0 ? cross.normalized() : Vec3.ZERO;
+        return TriangleFacts.spansArea(cross) ? cross.normalized() : Vec3.ZERO;
     }
 
     /** The unit normal at barycentric coordinates (beta, gamma): the face normal, or the blend of vertex normals. */
