@@ -6,9 +6,11 @@ import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
 import ray.surface.SurfaceKind;
+import ray.render.RenderPlan;
 import ray.render.TaskProbes;
 import ray.render.TaskProbes.Part;
 import ray.scene.Scene;
+import ray.shading.Effect;
 import ray.surface.Surface;
 import ray.testing.StudentTask;
 
@@ -31,15 +33,15 @@ final class BasicChecks {
     static Set<StudentTask> tasksOf(Scene scene) {
         Set<StudentTask> tasks = EnumSet.of(StudentTask.CAMERA, StudentTask.GROUP);
         addTasksOf(scene.getSurfaces(), tasks);
+        // Texture lookups, as the renderer's plan counts them: a lit shader with a texture on any
+        // surface, named in the scene or written inline in the shader.
+        if (RenderPlan.of(scene).runs(Effect.TEXTURES)) {
+            tasks.add(StudentTask.TEXTURE);
+        }
         return tasks;
     }
 
     private static void addTasksOf(Surface surface, Set<StudentTask> tasks) {
-        // A textured shader on any surface (named in the scene or written inline in it) looks its
-        // texture up with Task 5's code.
-        if (surface.getShader() != null && surface.getShader().getTexture() != null) {
-            tasks.add(StudentTask.TEXTURE);
-        }
         // The primitive's task as the renderer's pixel kinds name it (a mesh's or box's parts are triangles).
         int number = SurfaceKind.of(surface).task;
         for (StudentTask task : StudentTask.values()) {
