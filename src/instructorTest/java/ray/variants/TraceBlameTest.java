@@ -46,25 +46,27 @@ public class TraceBlameTest {
     }
 
     /**
-     * Pixel (215, 87) of eclipse is on the globe, a RepeatTexture: the lookup H − 1 − (int) (v·H + ½)
-     * reads the texel one row above the course's, which the trace names by its index.
+     * Pixel (215, 87) of eclipse is on the globe, a RepeatTexture written inline: the lookup
+     * H − 1 − (int) (v·H + ½) reads row 91 for the course's 92, which the trace names by its index.
      */
     @Test
     public void aRepeatTextureOneRowOffIsNamedByItsRowNotAsAMirror() throws Exception {
-        String out = VariantTrace.of(Variant.wrong("texture-rows-flipped-after-rounding", 5), folder.getRoot().toPath(),
-                "scenes/textured/eclipse.xml", 215, 87);
-        assertTrue(out, out.contains("one row above: flipping after the rounding, H − 1 − (int) (v·H + ½), is one row off"));
-        assertFalse(out, out.contains("mirrored row"));
-        assertTrue(out, out.contains("See TODO(Task 5)"));
+        assertOneRowAbove("scenes/textured/eclipse.xml", 215, 87, 273, 92);
     }
 
     /** The same on the globe scene (its texture named in the scene): pixel (155, 128) reads row 111 for 112. */
     @Test
     public void onTheGlobeSceneTheRowOffLookupIsNamedByItsRowToo() throws Exception {
-        String out = VariantTrace.of(Variant.wrong("texture-rows-flipped-after-rounding", 5), folder.getRoot().toPath(),
-                "scenes/textured/globe.xml", 155, 128);
-        assertTrue(out, out.contains("texel        (252, 112) of 512×256"));
-        assertTrue(out, out.contains("that is texel (252, 111), one row above: flipping after the rounding"));
+        assertOneRowAbove("scenes/textured/globe.xml", 155, 128, 252, 112);
+    }
+
+    /** The row-off lookup's trace of pixel (x, y): texel (column, row) of the 512×256 globe, read one row above. */
+    private void assertOneRowAbove(String scene, int x, int y, int column, int row) throws Exception {
+        String out = VariantTrace.of(Variant.wrong("texture-rows-flipped-after-rounding", 5), folder.getRoot().toPath(), scene, x, y);
+        assertTrue(out, out.contains("texel        (" + column + ", " + row + ") of 512×256"));
+        assertTrue(out, out.contains("that is texel (" + column + ", " + (row - 1) + "), one row above: flipping after the rounding,"
+                + " H − 1 − (int) (v·H + ½), is one row off"));
         assertFalse(out, out.contains("mirrored row"));
+        assertTrue(out, out.contains("See TODO(Task 5)"));
     }
 }
