@@ -62,6 +62,13 @@ public final class GradeAll implements Callable<Integer> {
     @Option(names = "--no-isolation", negatable = false, description = "Run student code as the grader's own user even as root.")
     boolean noIsolation;
 
+    @Option(names = "--assignment", description = "Grade this assignment: a preset's name or an assignment file (default: the project's"
+            + " assignment.properties).")
+    String assignmentGiven;
+
+    @Option(names = "--tasks", description = "The tasks of the assignment for this grade, by id, in order (overrides the assignment's).")
+    String tasksGiven;
+
     /** Where the log and progress lines go (the original stderr, as System.err is routed per grader). */
     PrintStream log;
 
@@ -71,6 +78,16 @@ public final class GradeAll implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        // The assignment is the process's while this run lasts (a test may run several in one JVM).
+        ray.assignment.Assignment before = ray.assignment.Assignment.current();
+        try {
+            return gradeAll();
+        } finally {
+            ray.assignment.Assignment.use(before);
+        }
+    }
+
+    private Integer gradeAll() throws Exception {
         PrintStream err = ThreadOutput.install();
         if (log == null) {
             log = err;
@@ -80,8 +97,11 @@ public final class GradeAll implements Callable<Integer> {
             if (jobs < 1) {
                 throw new IllegalArgumentException("--jobs must be at least 1, not " + jobs);
             }
+            // Every submission is graded as this assignment (the shared tree and each grader read it).
+            ray.assignment.Assignment.use(ray.assignment.Assignment.resolve(project, assignmentGiven,
+                    tasksGiven == null ? Map.of() : Map.of("tasks", tasksGiven)));
             all = ClassSubmission.in(submissions, out);
-        } catch (IllegalArgumentException e) {
+        } catch (IllegalArgumentException | ray.assignment.AssignmentException e) {
             log.println("error: " + e.getMessage());
             return 2;
         }

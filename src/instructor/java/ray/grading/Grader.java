@@ -61,6 +61,13 @@ public final class Grader implements Callable<Integer> {
     @Option(names = "--no-isolation", negatable = false, description = "Run student code as the grader's own user even as root.")
     boolean noIsolation;
 
+    @Option(names = "--assignment", description = "Grade this assignment: a preset's name or an assignment file (default: the project's"
+            + " assignment.properties).")
+    String assignmentGiven;
+
+    @Option(names = "--tasks", description = "The tasks of the assignment for this grade, by id, in order (overrides the assignment's).")
+    String tasksGiven;
+
     @Option(names = "--task", description = "Grade only this task's tests (a regrade of one task, or the diagnosis evaluation).")
     Integer onlyTask;
 
@@ -109,6 +116,16 @@ public final class Grader implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        // The assignment is the process's while this grade runs (a test may grade several in one JVM).
+        ray.assignment.Assignment before = ray.assignment.Assignment.current();
+        try {
+            return grade();
+        } finally {
+            ray.assignment.Assignment.use(before);
+        }
+    }
+
+    private Integer grade() throws Exception {
         long start = System.nanoTime();
         if (timeLimitSeconds > 0) {
             deadline = start + java.util.concurrent.TimeUnit.SECONDS.toNanos(timeLimitSeconds);
@@ -119,6 +136,11 @@ public final class Grader implements Callable<Integer> {
         Redaction redaction;
         Path resultsFile = out.resolve("results.json");
         try {
+            // The assignment graded: the project's file (in a grading package, the one it was packed with), or the one given.
+            if (sharedTree == null) {
+                ray.assignment.Assignment.use(ray.assignment.Assignment.resolve(project, assignmentGiven,
+                        tasksGiven == null ? Map.of() : Map.of("tasks", tasksGiven)));
+            }
             Files.createDirectories(out);
             work = Files.createTempDirectory(out, "work-");
             outcomes = gradeSubmission(output);

@@ -54,6 +54,11 @@ final class GradingClasses {
         ProjectTree.deleteRecursively(handout);
         Files.createDirectories(handout);
         copyMainClasses(tree, classes, handout, studentFiles.keySet());
+        // The framework reads the table of tasks and the assignment from its class path (a surface's kind names its task).
+        Path assignment = classes.resolve("ray/assignment");
+        if (Files.isDirectory(assignment)) {
+            ProjectTree.copyRecursively(assignment, handout.resolve("ray/assignment"));
+        }
         List<Path> stubs = new ArrayList<>();
         List<Path> standIns = new ArrayList<>();
         for (Map.Entry<String, Integer> file : studentFiles.entrySet()) {

@@ -59,7 +59,10 @@ public final class PrecompiledTree {
     }
 
     /** The fingerprint of the tree's sources (everything under src/). */
+    /** The fingerprint of the tree's sources and its assignment file (which the compiled classes carry). */
     private static String sources(Path tree) throws IOException {
-        return CompiledTree.fingerprint(tree, tree.resolve("src"));
+        Path assignment = tree.resolve(ray.assignment.Assignment.PROJECT_FILE);
+        return CompiledTree.fingerprint(tree, tree.resolve("src"))
+                + (Files.isRegularFile(assignment) ? "+" + CompiledTree.fingerprint(tree, assignment) : "");
     }
 }

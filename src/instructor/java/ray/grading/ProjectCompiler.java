@@ -18,7 +18,7 @@ import javax.tools.ToolProvider;
 /**
  * Compiles a project tree's main and test sources (src/main/java, src/test/java and, in the
  * instructor's tree, src/instructor/java and src/instructorTest/java) into one folder, in this JVM, and copies their
- * resources beside the classes. The compiler's messages are kept for the student.
+ * resources beside the classes, with the instructor's assignment file where the build puts it. The compiler's messages are kept for the student.
  */
 public final class ProjectCompiler {
     private static final List<String> SOURCE_FOLDERS = List.of("src/main/java", "src/instructor/java", "src/test/java",
@@ -48,6 +48,14 @@ public final class ProjectCompiler {
             if (Files.isDirectory(dir)) {
                 ProjectTree.copyRecursively(dir, classesDir);
             }
+        }
+        // The instructor's assignment file goes where the build puts it (gradle/instructor.gradle):
+        // the tests and the framework read the assignment from the classpath.
+        Path assignment = project.resolve(ray.assignment.Assignment.PROJECT_FILE);
+        if (Files.isRegularFile(assignment)) {
+            Path onClasspath = classesDir.resolve(ray.assignment.Assignment.RESOURCE);
+            Files.createDirectories(onClasspath.getParent());
+            Files.copy(assignment, onClasspath, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
         }
         return result;
     }

@@ -19,12 +19,17 @@ public final class ProjectTree {
      * settings.gradle is there because the tests know the project folder by it, beside scenes/
      * (ray.testing.ProjectFolder): without it no render test could find its scenes.
      */
-    public static final List<String> PARTS = List.of("src", "scenes", "settings.gradle");
+    public static final List<String> PARTS = List.of("src", "scenes", "settings.gradle", ray.assignment.Assignment.PROJECT_FILE);
 
     private ProjectTree() {
     }
 
-    /** A fresh copy of {@code project}'s sources and scenes at {@code target}, with {@code overlay} (relative path → file) laid over it. */
+    /**
+     * A fresh copy of {@code project}'s sources and scenes at {@code target}, with {@code overlay}
+     * (relative path → file) laid over it, and the assignment this process grades
+     * ({@link ray.assignment.Assignment#current()}) as its assignment file, complete: the tree's tests
+     * read it from the class path, so they number and count the tasks as the grader does.
+     */
     static Path copy(Path project, Path target, Map<String, Path> overlay) throws IOException {
         deleteRecursively(target);
         Files.createDirectories(target);
@@ -41,7 +46,14 @@ public final class ProjectTree {
             Files.createDirectories(destination.getParent());
             Files.copy(file.getValue(), destination, StandardCopyOption.REPLACE_EXISTING);
         }
+        writeAssignment(target, ray.assignment.Assignment.current());
         return target;
+    }
+
+    /** Writes {@code assignment}, complete, as the assignment file of the tree at {@code tree}. */
+    public static void writeAssignment(Path tree, ray.assignment.Assignment assignment) throws IOException {
+        Files.writeString(tree.resolve(ray.assignment.Assignment.PROJECT_FILE),
+                assignment.toFileText("The assignment this tree is graded as (written by the grader)."), java.nio.charset.StandardCharsets.UTF_8);
     }
 
     static void copyRecursively(Path from, Path to) throws IOException {

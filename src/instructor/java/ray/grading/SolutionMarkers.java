@@ -10,7 +10,51 @@ public final class SolutionMarkers {
     public static final String END = "// END SOLUTION";
     public static final String STUB = "// STUB: ";
 
+    /** The first line of a task's TODO comment, with the task's number. */
+    private static final java.util.regex.Pattern TODO = java.util.regex.Pattern.compile("//\\s*TODO\\(Task (\\d+)\\)");
+
     private SolutionMarkers() {
+    }
+
+    /**
+     * The student's version of a file of task {@code number} in the assignment: {@link #studentVersion},
+     * with every {@code TODO(Task N)} comment numbered as the assignment numbers the task.
+     */
+    public static String studentVersion(String source, String fileName, int number) {
+        return TODO.matcher(studentVersion(source, fileName)).replaceAll("// TODO(Task " + number + ")");
+    }
+
+    /**
+     * The version of a student file that ships when the assignment does not choose its task: the
+     * solution kept (its markers gone), the stub lines dropped, and each TODO comment (its first line
+     * and the comment lines that continue it) removed, so that nothing asks for work that is done.
+     *
+     * @throws IllegalArgumentException for markers that do not pair up, naming the file and line
+     */
+    public static String solvedVersion(String source, String fileName) {
+        studentVersion(source, fileName); // the same checks of the markers
+        StringBuilder out = new StringBuilder(source.length());
+        String[] lines = source.split("\n", -1);
+        boolean inTodo = false;
+        for (int n = 0; n < lines.length; n++) {
+            String trimmed = lines[n].strip();
+            if (TODO.matcher(trimmed).lookingAt()) {
+                inTodo = true;
+                continue;
+            }
+            if (inTodo && trimmed.startsWith("//") && !trimmed.equals(BEGIN)) {
+                continue;
+            }
+            inTodo = false;
+            if (trimmed.equals(BEGIN) || trimmed.equals(END) || trimmed.startsWith(STUB)) {
+                continue;
+            }
+            out.append(lines[n]);
+            if (n < lines.length - 1) {
+                out.append('\n');
+            }
+        }
+        return out.toString();
     }
 
     /**

@@ -1,7 +1,6 @@
 package ray.grading;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,12 +11,13 @@ import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import java.util.stream.Stream;
+import ray.assignment.Assignment;
+import ray.assignment.Task;
+import ray.assignment.TaskTable;
 
 /**
- * The files a student fills in, found by their markers: every source file under src/main/java that
- * holds a solution block ({@link SolutionMarkers}), and the task its {@code // TODO(Task N)} comment names.
- * Adding a task to the assignment needs no list to update here.
+ * The files a student fills in: those of the assignment's tasks, as the table of tasks lists them,
+ * each with its task's number in the assignment.
  */
 public final class StudentFiles {
     private static final Pattern TASK = Pattern.compile("//\\s*TODO\\(Task (\\d+)\\)");
@@ -48,25 +48,36 @@ public final class StudentFiles {
         return optional;
     }
 
-    /** Relative path (with '/' separators) → task number, sorted by path. */
+    /**
+     * Relative path (with '/' separators) → task number, sorted by path: the files of every task the
+     * assignment chooses, as the table of tasks lists them. Each must hold a solution block
+     * ({@link SolutionMarkers}) and its task's {@code // TODO(Task N)} comment, or the tree is no
+     * instructor's tree of this assignment.
+     */
     public static Map<String, Integer> in(Path projectRoot) {
-        Path sources = projectRoot.resolve("src/main/java");
+        Assignment assignment = Assignment.current();
         Map<String, Integer> files = new TreeMap<>();
-        try (Stream<Path> walk = Files.walk(sources)) {
-            for (Path file : (Iterable<Path>) walk.filter(p -> p.toString().endsWith(".java"))::iterator) {
-                String text = Files.readString(file, StandardCharsets.UTF_8);
-                // The marker as a line of its own: code that merely mentions it (this class) is no student file.
+        for (Task task : assignment.tasks()) {
+            int number = assignment.number(task.id());
+            for (String path : task.projectFiles()) {
+                Path file = projectRoot.resolve(path);
+                String text;
+                try {
+                    text = Files.readString(file, StandardCharsets.UTF_8);
+                } catch (IOException e) {
+                    throw new IllegalStateException(path + ", a file of the task " + task.id() + " in " + TaskTable.PROJECT_FILE
+                            + ", cannot be read: " + e.getMessage());
+                }
+                // The marker as a line of its own: code that merely mentions it is no student file.
                 if (text.lines().noneMatch(line -> line.strip().equals(SolutionMarkers.BEGIN))) {
-                    continue;
+                    throw new IllegalStateException(path + ", a file of the task " + task.id() + ", has no solution block");
                 }
                 Matcher m = TASK.matcher(text);
                 if (!m.find()) {
-                    throw new IllegalStateException(file + " has a solution block but no // TODO(Task N) comment");
+                    throw new IllegalStateException(path + " has a solution block but no // TODO(Task N) comment");
                 }
-                files.put(projectRoot.relativize(file).toString().replace('\\', '/'), Integer.parseInt(m.group(1)));
+                files.put(path, number);
             }
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
         }
         return files;
     }

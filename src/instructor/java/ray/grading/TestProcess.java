@@ -157,10 +157,20 @@ public final class TestProcess {
         Path events = eventsFile("list");
         watch(launch(events, task == null ? null : Set.of(task), Set.of(), true, ""), events);
         List<TestOutcome> tests = new ArrayList<>();
+        boolean done = false;
         for (Map<String, Object> e : read(events)) {
             if ("test".equals(e.get("event"))) {
                 tests.add(outcome(e, false, "not run"));
             }
+            done |= "done".equals(e.get("event"));
+        }
+        // Listing runs the instructor's code alone: a listing that did not finish is the instructor's
+        // error, which must stop the grade rather than leave it with no tests (a score of 0 / 0).
+        if (!done) {
+            Path output = workDir.resolve("test-output.txt");
+            String first = Files.exists(output) ? Files.readAllLines(output, java.nio.charset.StandardCharsets.UTF_8).stream()
+                    .filter(line -> !line.isBlank()).findFirst().orElse("") : "";
+            throw new IllegalStateException("the instructor's tests could not be listed" + (first.isEmpty() ? "" : ": " + first));
         }
         return tests;
     }

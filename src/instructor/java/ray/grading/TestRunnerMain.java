@@ -258,10 +258,9 @@ public final class TestRunnerMain {
         return points == null || "visible".equals(PointsAnnotation.field(points, "visibility", "gradescope"));
     }
 
-    /** The task a test class's @Points names; 0 for none. */
+    /** The number of a graded test class's task in this assignment ({@link GradedTask}); 0 for none. */
     private static int taskOf(Class<?> type) {
-        Annotation points = PointsAnnotation.ofClass(type);
-        return points == null ? 0 : ((Number) PointsAnnotation.field(points, "task", "number")).intValue();
+        return PointsAnnotation.ofClass(type) == null ? 0 : GradedTask.of(type.getName()).map(GradedTask::number).orElse(0);
     }
 
     private void listTests(Description d) throws IOException {
@@ -299,17 +298,22 @@ public final class TestRunnerMain {
         return m;
     }
 
-    /** The test's @Points as task number, task title, points, bonus and visibility; null for ungraded tests. */
+    /**
+     * The test's grading: its task's number and title in this assignment, its @Points' points, bonus
+     * (its own, or its task's extra credit) and visibility; null for ungraded tests, among them the
+     * tests of a task the assignment does not choose.
+     */
     private static Map<String, Object> grading(Description d) {
         Annotation points = PointsAnnotation.of(d);
-        if (points == null) {
+        GradedTask task = points == null ? null : GradedTask.of(d.getClassName()).orElse(null);
+        if (task == null) {
             return null;
         }
         Map<String, Object> m = new LinkedHashMap<>();
-        m.put("task", PointsAnnotation.field(points, "task", "number"));
-        m.put("title", PointsAnnotation.field(points, "task", "title"));
+        m.put("task", task.number());
+        m.put("title", task.title());
         m.put("points", PointsAnnotation.element(points, "value"));
-        m.put("bonus", PointsAnnotation.element(points, "bonus"));
+        m.put("bonus", (Boolean) PointsAnnotation.element(points, "bonus") || task.extraCredit());
         m.put("visibility", PointsAnnotation.field(points, "visibility", "gradescope"));
         m.put("class", d.getClassName());
         m.put("method", d.getMethodName());

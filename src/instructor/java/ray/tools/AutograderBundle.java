@@ -20,7 +20,7 @@ import ray.grading.ReadableFiles;
  * <li>{@code lib/}: the grader and framework classes as one jar, and every library the grading needs,
  *     so that nothing is downloaded at grading time.</li>
  * </ul>
- * Usage: {@code AutograderBundle PROJECT ZIP --classes DIR... --libraries JAR...}.
+ * Usage: {@code AutograderBundle PROJECT ZIP [--assignment PRESET|FILE] [--tasks ID,…] --classes DIR... --libraries JAR...}.
  */
 public final class AutograderBundle {
     /** The bundle's Unix modes: the scripts executable, the rest readable. */
@@ -38,6 +38,7 @@ public final class AutograderBundle {
         List<Path> classes = new ArrayList<>();
         List<Path> libraries = new ArrayList<>();
         GradingKit.parse(args, 2, classes, libraries);
+        GradingKit.useAssignment(Path.of(args[0]), args);
         Path zip = Path.of(args[1]);
         build(Path.of(args[0]), zip, classes, libraries);
         System.out.println("autograder: " + zip + " (" + Files.size(zip) / 1024 + " KiB)");

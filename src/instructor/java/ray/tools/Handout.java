@@ -8,13 +8,17 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.apache.commons.compress.archivers.zip.ZipArchiveEntry;
 import org.apache.commons.compress.archivers.zip.ZipArchiveOutputStream;
+import ray.assignment.Assignment;
+import ray.assignment.AssignmentException;
 import ray.grading.SolutionMarkers;
 
 /**
@@ -38,32 +42,79 @@ public final class Handout {
     private static final Pattern SECTION_END = Pattern.compile("\\s*(<!--|//)\\s*END INSTRUCTOR\\b.*");
     /** Text that must never reach a student. */
     private static final List<String> LEAKS = List.of("BEGIN SOLUTION", "END SOLUTION", "// STUB:", "BEGIN INSTRUCTOR",
-            "END INSTRUCTOR");
+            "END INSTRUCTOR", "END TASK -->", "END IF -->", "<!-- task:");
 
     private Handout() {
     }
 
+    /**
+     * {@code Handout PROJECT [--assignment PRESET|FILE] [--tasks ID,ID,…]}: the handout of the
+     * project's assignment, or of the one given for this run (see {@link Assignment#resolve}).
+     */
     public static void main(String[] args) throws IOException {
         Path project = Path.of(args.length > 0 ? args[0] : ".");
+        String given = null;
+        Map<String, String> overrides = new LinkedHashMap<>();
+        for (int i = 1; i + 1 < args.length; i += 2) {
+            switch (args[i]) {
+                case "--assignment":
+                    given = args[i + 1].isBlank() ? null : args[i + 1];
+                    break;
+                case "--tasks":
+                    if (!args[i + 1].isBlank()) {
+                        overrides.put("tasks", args[i + 1]);
+                    }
+                    break;
+                default:
+                    throw new IllegalArgumentException("unknown option " + args[i]);
+            }
+        }
+        Assignment assignment;
+        try {
+            assignment = Assignment.resolve(project, given, overrides);
+        } catch (AssignmentException e) {
+            System.err.println("handout: " + e.getMessage());
+            System.exit(2);
+            return;
+        }
         Path folder = project.resolve("build/handout/ray1");
         Path zip = project.resolve("build/distributions/ray1-handout.zip");
-        List<String> files = build(project, folder);
+        List<String> files = build(project, folder, assignment);
         zip(folder, zip);
         System.out.println("handout: " + files.size() + " files in " + folder + " and " + zip);
+        System.out.println("  " + assignment.tasks().size() + " tasks: " + String.join(", ", assignment.tasks().stream()
+                .map(t -> assignment.number(t.id()) + " " + t.id() + (assignment.isExtraCredit(t.id()) ? " (extra credit)" : ""))
+                .toArray(String[]::new)));
     }
 
-    /** Writes the handout into {@code target} (emptied first) and returns its files' relative paths. */
+    /** Writes the handout of the project's own assignment into {@code target}; see {@link #build(Path, Path, Assignment)}. */
     public static List<String> build(Path project, Path target) throws IOException {
+        return build(project, target, Assignment.resolve(project, null, Map.of()));
+    }
+
+    /**
+     * Writes the handout of {@code assignment} into {@code target} (emptied first) and returns its
+     * files' relative paths. A chosen task's files are stubbed, their TODO comments numbered as the
+     * assignment numbers the task; a task the assignment leaves out ships solved and without its tests.
+     */
+    public static List<String> build(Path project, Path target, Assignment assignment) throws IOException {
         delete(target);
         List<String> written = new ArrayList<>();
         for (Path file : kitFiles(project)) {
             String relative = project.relativize(file).toString().replace('\\', '/');
+            if (relative.equals(Assignment.PROJECT_FILE) || isTestOfUnchosenTask(relative, assignment)) {
+                continue;
+            }
             Path destination = target.resolve(relative);
             Files.createDirectories(destination.getParent());
             if (relative.endsWith(".java")) {
                 String source = Files.readString(file, StandardCharsets.UTF_8);
-                Files.writeString(destination, SolutionMarkers.studentVersion(source, relative), StandardCharsets.UTF_8);
-            } else if (relative.endsWith(".md") || relative.endsWith(".gradle")) {
+                Files.writeString(destination, javaVersion(source, relative, assignment), StandardCharsets.UTF_8);
+            } else if (relative.endsWith(".md")) {
+                // The students' docs, numbered and cut for the assignment (AssignmentDocs).
+                String text = withoutInstructorSections(Files.readString(file, StandardCharsets.UTF_8), relative);
+                Files.writeString(destination, AssignmentDocs.compose(text, relative, assignment), StandardCharsets.UTF_8);
+            } else if (relative.endsWith(".gradle")) {
                 String text = Files.readString(file, StandardCharsets.UTF_8);
                 Files.writeString(destination, withoutInstructorSections(text, relative), StandardCharsets.UTF_8);
             } else {
@@ -72,8 +123,35 @@ public final class Handout {
             }
             written.add(relative);
         }
+        // The assignment, complete, where the students' build and the framework read it.
+        String assignmentFile = "src/main/resources/" + Assignment.RESOURCE;
+        Path destination = target.resolve(assignmentFile);
+        Files.createDirectories(destination.getParent());
+        Files.writeString(destination, assignment.toFileText("The tasks of this assignment, in order: the first is Task 1."),
+                StandardCharsets.UTF_8);
+        written.add(assignmentFile);
+        written.sort(null);
         checkNoLeaks(target, written);
         return written;
+    }
+
+    /** A Java file as it ships: a chosen task's file stubbed and numbered, an unchosen task's solved, any other without markers. */
+    private static String javaVersion(String source, String relative, Assignment assignment) {
+        return assignment.table().ofFile(relative)
+                .map(task -> assignment.isChosen(task.id())
+                        ? SolutionMarkers.studentVersion(source, relative, assignment.number(task.id()))
+                        : SolutionMarkers.solvedVersion(source, relative))
+                .orElseGet(() -> SolutionMarkers.studentVersion(source, relative));
+    }
+
+    /** Whether {@code relative} is a test class (under src/test/java) of a task the assignment leaves out. */
+    static boolean isTestOfUnchosenTask(String relative, Assignment assignment) {
+        String prefix = "src/test/java/";
+        if (!relative.startsWith(prefix) || !relative.endsWith(".java")) {
+            return false;
+        }
+        String className = relative.substring(prefix.length(), relative.length() - ".java".length()).replace('/', '.');
+        return assignment.table().ofTestClass(className).filter(t -> !assignment.isChosen(t.id())).isPresent();
     }
 
     /**

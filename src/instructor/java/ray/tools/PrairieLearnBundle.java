@@ -37,7 +37,7 @@ import ray.grading.TestProcess;
  *     its {@code environment} sets {@code RAY1_HIDDEN_TESTS}, how the grader shows hidden tests
  *     ({@link PrairieLearnResults.HiddenTests}, {@code summary} unless {@code --hidden-tests} says otherwise).</li>
  * </ul>
- * Usage: {@code PrairieLearnBundle PROJECT FOLDER IMAGE [--hidden-tests summary|each] --classes DIR... --libraries JAR...}.
+ * Usage: {@code PrairieLearnBundle PROJECT FOLDER IMAGE [--hidden-tests summary|each] [--assignment PRESET|FILE] [--tasks ID,…] --classes DIR... --libraries JAR...}.
  */
 public final class PrairieLearnBundle {
     private PrairieLearnBundle() {
@@ -62,6 +62,7 @@ public final class PrairieLearnBundle {
         List<Path> classes = new ArrayList<>();
         List<Path> libraries = new ArrayList<>();
         GradingKit.parse(args, 3, classes, libraries);
+        GradingKit.useAssignment(Path.of(args[0]), args);
         Path folder = Path.of(args[1]);
         build(Path.of(args[0]), folder, args[2], hiddenTests, classes, libraries);
         System.out.println("prairielearn: " + folder + " (image " + args[2] + ", hidden tests: " + hiddenTests + "; see its README.md)");

@@ -17,14 +17,14 @@ import ray.testing.ProjectFolder;
 import ray.testing.StudentTask;
 
 /**
- * docs/grading.md's table of graded scenes says what {@link RenderScenes#TASKS} grades: every scene
+ * docs/grading.md's table of graded scenes says what the table of tasks' scenes grades: every scene
  * there is listed once, in the row of its task, and the table names no scene that is not graded.
- * A scene added to TASKS (and so to the render tests) without a line in the students' table fails
+ * A scene added to a task's scenes (and so to the render tests) without a line in the students' table fails
  * here, as the four scenes of scenes/hard once went unlisted.
  */
 public class GradingDocScenesTest {
     /** A row of the table: "| Task 2 (sphere) | one-sphere, globe |". */
-    private static final Pattern ROW = Pattern.compile("\\|\\s*Task (\\d+)\\b[^|]*\\|([^|]*)\\|\\s*");
+    private static final Pattern ROW = Pattern.compile("\\|\\s*Task (\\d+)\\b[^|]*\\|([^|]*)\\|\\s*(<!--.*-->)?\\s*");
     /** A scene name at the start of a cell entry; anything after it (a remark in parentheses) is not a name. */
     private static final Pattern NAME = Pattern.compile("\\s*([a-z0-9]+(?:-[a-z0-9]+)*)\\b.*", Pattern.DOTALL);
 
@@ -50,21 +50,21 @@ public class GradingDocScenesTest {
             }
         }
         assertTrue("docs/grading.md has no table of graded scenes (a \"| task | scenes |\" header)", !listed.isEmpty() || !problems.isEmpty());
-        for (Map.Entry<String, StudentTask> graded : RenderScenes.TASKS.entrySet()) {
+        for (Map.Entry<String, ray.assignment.Task> graded : RenderScenes.tasksOfScenes().entrySet()) {
             Integer row = listed.get(graded.getKey());
-            int task = graded.getValue().number;
+            int task = StudentTask.of(graded.getValue().id()).number;
             if (row == null) {
-                problems.add(graded.getKey() + " (graded under Task " + task + " in RenderScenes.TASKS) is missing from the table");
+                problems.add(graded.getKey() + " (graded under Task " + task + " in the table of tasks) is missing from the table");
             } else if (row != task) {
-                problems.add(graded.getKey() + " is listed under Task " + row + ", but RenderScenes.TASKS grades it under Task " + task);
+                problems.add(graded.getKey() + " is listed under Task " + row + ", but the table of tasks grades it under Task " + task);
             }
         }
         for (String name : listed.keySet()) {
-            if (!RenderScenes.TASKS.containsKey(name)) {
-                problems.add(name + " is in the table but not in RenderScenes.TASKS, so no render test grades it");
+            if (!RenderScenes.tasksOfScenes().containsKey(name)) {
+                problems.add(name + " is in the table but not in the table of tasks, so no render test grades it");
             }
         }
-        assertTrue("docs/grading.md's table of graded scenes disagrees with RenderScenes.TASKS: " + String.join("; ", problems),
+        assertTrue("docs/grading.md's table of graded scenes disagrees with the table of tasks: " + String.join("; ", problems),
                 problems.isEmpty());
     }
 

@@ -54,7 +54,7 @@ public class RenderDiffReportTest {
         report.record(SphereRenderTest.class, "far-tiny-sphere", false);
         // The test reads the scene by its absolute path; the page names it as typed in the project folder.
         String location = report.addEntry(SphereRenderTest.class, "far-tiny-sphere", ProjectFolder.resolve("scenes", "hard", "far-tiny-sphere.xml"),
-                StudentTask.SPHERE, ImageDiff.compare(white, black), black, white,
+                StudentTask.of("sphere"), ImageDiff.compare(white, black), black, white,
                 "The scene uses Task 1 (Camera rays), Task 2 (Sphere) and Task 4 (Group).\nA second finding.");
         // The message links to the scene's own section of the page.
         assertTrue(location, location.endsWith("index.html#SphereRenderTest-far-tiny-sphere"));

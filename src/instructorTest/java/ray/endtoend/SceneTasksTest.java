@@ -14,7 +14,7 @@ import ray.scene.SceneFiles;
 
 /**
  * Every shipped scene is graded exactly once: each scene under scenes/ has a task in
- * {@link RenderScenes#TASKS} (so a new scene cannot be forgotten), every listed scene exists and
+ * the table of tasks' {@code scenes} (so a new scene cannot be forgotten), every listed scene exists and
  * has a reference image, and no two scenes share a name (they would share a reference image).
  *
  * <p>An instructor's check, kept out of the handout: a student's own scenes (scenes/my-test.xml)
@@ -27,18 +27,18 @@ public class SceneTasksTest {
         List<Path> scenes = RenderScenes.sceneFiles();
         assertTrue("no scenes found under " + RenderScenes.folder(), !scenes.isEmpty());
         for (Path file : scenes) {
-            if (!RenderScenes.TASKS.containsKey(SceneFiles.nameOf(file))) {
+            if (!RenderScenes.tasksOfScenes().containsKey(SceneFiles.nameOf(file))) {
                 unassigned.add(file.toString());
             }
         }
-        assertTrue("scenes without a task; add each to RenderScenes.TASKS (and run gradle references): " + unassigned,
+        assertTrue("scenes without a task; add each to a task's scenes in the table of tasks (and run gradle references): " + unassigned,
                 unassigned.isEmpty());
     }
 
     @Test
     public void everyAssignedSceneExistsAndHasAReference() {
         List<String> problems = new ArrayList<>();
-        for (String name : RenderScenes.TASKS.keySet()) {
+        for (String name : RenderScenes.tasksOfScenes().keySet()) {
             if (!Files.isRegularFile(RenderScenes.fileOf(name))) {
                 problems.add("no scene file " + name + ".xml under " + RenderScenes.folder());
             } else if (!Files.isRegularFile(RenderScenes.referenceOf(name))) {
@@ -46,6 +46,17 @@ public class SceneTasksTest {
             }
         }
         assertTrue(String.join("; ", problems), problems.isEmpty());
+    }
+
+    @Test
+    public void noSceneIsTwoTasksScenes() {
+        Map<String, String> owner = new HashMap<>();
+        for (ray.assignment.Task task : ray.assignment.TaskTable.standard().all()) {
+            for (String scene : task.scenes()) {
+                String previous = owner.putIfAbsent(scene, task.id());
+                assertEquals(scene + " is a scene of two tasks in the table of tasks", null, previous);
+            }
+        }
     }
 
     @Test

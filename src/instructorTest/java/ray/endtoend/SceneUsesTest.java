@@ -22,23 +22,23 @@ public class SceneUsesTest {
     public void inlineTexturesCountAsTask5() throws Exception {
         Scene eclipse = SceneLoader.load(RenderScenes.fileOf("eclipse"));
         assertTrue(eclipse.getTextures().isEmpty()); // the point of this case: no named texture
-        assertEquals(Set.of(StudentTask.CAMERA, StudentTask.SPHERE, StudentTask.GROUP, StudentTask.TEXTURE), BasicChecks.tasksOf(eclipse));
+        assertEquals(Set.of(StudentTask.of("camera-rays"), StudentTask.of("sphere"), StudentTask.of("group"), StudentTask.of("textures")), BasicChecks.tasksOf(eclipse));
         assertEquals("The scene uses Task 1 (Camera rays), Task 2 (Sphere), Task 4 (Group) and Task 5 (Textures).",
                 RenderTestBase.usesLine(eclipse));
     }
 
     @Test
     public void anUntexturedSceneDoesNotUseTask5() throws Exception {
-        assertEquals(Set.of(StudentTask.CAMERA, StudentTask.SPHERE, StudentTask.GROUP),
+        assertEquals(Set.of(StudentTask.of("camera-rays"), StudentTask.of("sphere"), StudentTask.of("group")),
                 BasicChecks.tasksOf(SceneLoader.load(RenderScenes.fileOf("one-sphere"))));
     }
 
     /** Every graded render's own task is among those its scene uses. */
     @Test
     public void everyRendersOwnTaskIsAmongItsScenesTasks() throws Exception {
-        for (Map.Entry<String, StudentTask> e : RenderScenes.TASKS.entrySet()) {
+        for (Map.Entry<String, ray.assignment.Task> e : RenderScenes.tasksOfScenes().entrySet()) {
             Set<StudentTask> uses = BasicChecks.tasksOf(SceneLoader.load(RenderScenes.fileOf(e.getKey())));
-            assertTrue(e.getKey() + " uses " + uses, uses.contains(e.getValue()));
+            assertTrue(e.getKey() + " uses " + uses, uses.contains(StudentTask.of(e.getValue().id())));
         }
     }
 }

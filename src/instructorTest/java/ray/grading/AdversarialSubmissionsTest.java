@@ -307,7 +307,7 @@ public class AdversarialSubmissionsTest {
     /** The finder itself finds a hidden test and a solution class in each encoding the probes use, and nothing in an ordinary message. */
     @Test
     public void theLeakFinderFindsEachEncoding() throws Exception {
-        byte[] hidden = Files.readAllBytes(CHECKOUT.resolve("src/instructorTest/java/ray/hidden/Task2HiddenTest.java"));
+        byte[] hidden = Files.readAllBytes(CHECKOUT.resolve("src/instructorTest/java/ray/hidden/SphereHiddenTest.java"));
         byte[] slice = java.util.Arrays.copyOfRange(hidden, 1001, 1400);
         String base64 = java.util.Base64.getEncoder().encodeToString(slice);
         assertEquals("plain", finder.leakIn("boom: " + new String(slice, StandardCharsets.UTF_8)));

@@ -70,7 +70,7 @@ public class MistakeEvidenceTest {
                 folder.getRoot().toPath().resolve("round-twice")).orElseThrow();
         assertTrue(failed.toString(), failed.containsKey("ray.shading.RepeatTextureTest#theImagesEdgesWrapAsTheCourseDoes"));
         assertTrue(failed.toString(), failed.keySet().stream().allMatch(id -> id.startsWith("ray.shading.RepeatTextureTest#")
-                || id.startsWith("ray.hidden.Task5HiddenTest#")));
+                || id.startsWith("ray.hidden.TexturesHiddenTest#")));
         assertFalse(failed.toString(), failed.values().stream().anyMatch(message -> message.contains("ClampTexture.getTexColor")
                 || message.contains("ClampTexture on")));
     }

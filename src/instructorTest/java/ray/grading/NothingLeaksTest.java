@@ -26,14 +26,14 @@ public class NothingLeaksTest {
     public static final TemporaryFolder FOLDER = new TemporaryFolder();
 
     private static final Path PROJECT = Path.of(".");
-    private static final String HIDDEN = "src/instructorTest/java/ray/hidden/Task4HiddenTest.java";
+    private static final String HIDDEN = "src/instructorTest/java/ray/hidden/GroupHiddenTest.java";
     private static final String GROUP = "src/main/java/ray/surface/Group.java";
     private static final String SPHERE = "src/main/java/ray/surface/Sphere.java";
 
     @Test
     public void aLineOfAHiddenTestIsRemovedAndAnOrdinaryMessageKept() {
         Redaction redaction = Redaction.of(PROJECT);
-        String secret = "public class Task4HiddenTest {";
+        String secret = "public class GroupHiddenTest {";
         assertEquals("expected a hit at t = 4; your intersect returned false\nboom: " + Redaction.REMOVED,
                 redaction.redact("expected a hit at t = 4; your intersect returned false\nboom: " + secret));
         // A line the handout ships too is no secret.

@@ -34,9 +34,9 @@ public class ScoreSummaryTest {
                 false, "visible", false, "jittered", 0.1);
         TestOutcome cameraHit = new TestOutcome("ray.camera.CameraTest#center", "ray.camera.CameraTest", "center", 1, "Camera rays", 1,
                 false, "visible", true, "", 0.1);
-        TestOutcome bonus = new TestOutcome("ray.surface.CylinderBonusTest#hit", "ray.surface.CylinderBonusTest", "hit", 6, "Cylinder",
+        TestOutcome bonus = new TestOutcome("ray.surface.CylinderTest#hit", "ray.surface.CylinderTest", "hit", 6, "Cylinder",
                 26, true, "visible", true, "", 0.1);
-        TestOutcome hiddenBonus = new TestOutcome("ray.hidden.Task6HiddenTest#cap", "ray.hidden.Task6HiddenTest", "cap", 6, "Cylinder",
+        TestOutcome hiddenBonus = new TestOutcome("ray.hidden.CylinderHiddenTest#cap", "ray.hidden.CylinderHiddenTest", "cap", 6, "Cylinder",
                 1, true, "hidden", false, "missed the cap", 0.1);
         String summary = ScoreSummary.of(List.of(camera, cameraHit, bonus, hiddenBonus), t -> true);
         assertEquals(String.join("\n",

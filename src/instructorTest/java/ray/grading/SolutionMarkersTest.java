@@ -69,14 +69,14 @@ public class SolutionMarkersTest {
         }
     }
 
-    /** StudentTask (which tests name) and the TODO markers (which the grader reads) must agree. */
+    /** The student files are the assignment's tasks' files of the table, each with its task's number, as the tests' StudentTask names them. */
     @Test
-    public void studentTaskFilesMatchTheMarkers() {
-        java.util.Map<String, Integer> fromMarkers = StudentFiles.in(java.nio.file.Path.of("."));
-        java.util.Map<String, Integer> fromEnum = new java.util.TreeMap<>();
+    public void studentFilesAreTheAssignmentsTasksFiles() {
+        java.util.Map<String, Integer> found = StudentFiles.in(java.nio.file.Path.of("."));
+        java.util.Map<String, Integer> fromTests = new java.util.TreeMap<>();
         for (ray.testing.StudentTask task : ray.testing.StudentTask.values()) {
-            task.files.forEach(f -> fromEnum.put(f, task.number));
+            task.files.forEach(f -> fromTests.put(f, task.number));
         }
-        assertEquals(fromMarkers, fromEnum);
+        assertEquals(fromTests, found);
     }
 }

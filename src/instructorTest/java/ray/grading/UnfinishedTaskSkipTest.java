@@ -26,20 +26,20 @@ public class UnfinishedTaskSkipTest {
     @ClassRule
     public static final TemporaryFolder FOLDER = new TemporaryFolder();
 
-    private static String demo(String className, String task, int ruleSeconds, String... methods) {
+    /** A graded test class in {@code pkg}: its name and package make it one task's, by the table of tasks' test patterns. */
+    private static String demo(String pkg, String className, int ruleSeconds, String... methods) {
         return String.join("\n",
-                "package demo;",
+                "package " + pkg + ";",
                 "import org.junit.FixMethodOrder;",
                 "import org.junit.Rule;",
                 "import org.junit.Test;",
                 "import org.junit.runners.MethodSorters;",
                 "import ray.testing.Points;",
-                "import ray.testing.StudentTask;",
                 "import ray.testing.StudentTaskRule;",
-                "@Points(value = 1, task = StudentTask." + task + ")",
+                "@Points(1)",
                 "@FixMethodOrder(MethodSorters.NAME_ASCENDING)",
                 "public class " + className + " {",
-                "    @Rule public final StudentTaskRule rule = StudentTaskRule.of(StudentTask." + task + ").withTimeoutSeconds("
+                "    @Rule public final StudentTaskRule rule = StudentTaskRule.of(getClass()).withTimeoutSeconds("
                         + ruleSeconds + ");",
                 String.join("\n", methods),
                 "}",
@@ -47,32 +47,34 @@ public class UnfinishedTaskSkipTest {
     }
 
     private static final String LOOP = "{ while (true) { Thread.onSpinWait(); } }";
-    private static final String BONUS = "@Points(value = 1, task = StudentTask.TRIANGLE, bonus = true) ";
+    private static final String BONUS = "@Points(value = 1, bonus = true) ";
     private static Path project;
 
     @BeforeClass
     public static void compileDemoProject() throws Exception {
         project = FOLDER.getRoot().toPath().resolve("unfinished-project");
-        Path tests = project.resolve("src/test/java/demo");
-        Files.createDirectories(tests);
-        Files.writeString(tests.resolve("CameraLoopTest.java"), demo("CameraLoopTest", "CAMERA", 1,
+        Path sources = project.resolve("src/test/java/ray");
+        for (String pkg : List.of("camera", "surface", "shading")) {
+            Files.createDirectories(sources.resolve(pkg));
+        }
+        Files.writeString(sources.resolve("camera/CameraLoopTest.java"), demo("ray.camera", "CameraLoopTest", 1,
                 "    @Test public void a_passes() { }",
                 "    @Test public void b_loops() " + LOOP,
                 "    @Test public void c_wouldPass() { }",
-                "    @Points(value = 1, task = StudentTask.CAMERA, bonus = true) @Test public void d_bonusWouldPass() { }"),
+                "    @Points(value = 1, bonus = true) @Test public void d_bonusWouldPass() { }"),
                 StandardCharsets.UTF_8);
-        Files.writeString(tests.resolve("SphereFineTest.java"), demo("SphereFineTest", "SPHERE", 1,
+        Files.writeString(sources.resolve("surface/SphereFineTest.java"), demo("ray.surface", "SphereFineTest", 1,
                 "    @Test public void passes() { }"), StandardCharsets.UTF_8);
-        Files.writeString(tests.resolve("TriangleBonusLoopTest.java"), demo("TriangleBonusLoopTest", "TRIANGLE", 1,
+        Files.writeString(sources.resolve("surface/TriangleBonusLoopTest.java"), demo("ray.surface", "TriangleBonusLoopTest", 1,
                 "    " + BONUS + "@Test public void a_bonusLoops() " + LOOP,
                 "    " + BONUS + "@Test public void b_bonusWouldPass() { }",
                 "    @Test public void c_regularPasses() { }"), StandardCharsets.UTF_8);
-        Files.writeString(tests.resolve("TextureHiddenLoopTest.java"), demo("TextureHiddenLoopTest", "TEXTURE", 1,
-                "    @Points(value = 1, task = StudentTask.TEXTURE, visibility = ray.testing.Visibility.HIDDEN)"
+        Files.writeString(sources.resolve("shading/TextureHiddenLoopTest.java"), demo("ray.shading", "TextureHiddenLoopTest", 1,
+                "    @Points(value = 1, visibility = ray.testing.Visibility.HIDDEN)"
                         + " @Test public void a_secretCaseLoops() " + LOOP,
                 "    @Test public void b_wouldPass() { }"), StandardCharsets.UTF_8);
         // A loop that the rule's limit (60 s) does not reach before the grader's backstop (3 s) stops the JVM.
-        Files.writeString(tests.resolve("GroupStoppedTest.java"), demo("GroupStoppedTest", "GROUP", 60,
+        Files.writeString(sources.resolve("surface/GroupStoppedTest.java"), demo("ray.surface", "GroupStoppedTest", 60,
                 "    @Test public void a_loopsUntilStopped() " + LOOP,
                 "    @Test public void b_wouldPass() { }"), StandardCharsets.UTF_8);
         CompileResult compiled = ProjectCompiler.compile(project, project.resolve("classes"), System.getProperty("java.class.path"));
@@ -82,7 +84,7 @@ public class UnfinishedTaskSkipTest {
     private static Map<String, TestOutcome> run(String work) throws Exception {
         List<TestOutcome> outcomes = new TestProcess(project, project.resolve("classes"), System.getProperty("java.class.path"),
                 project.resolve(work)).withHardLimitSeconds(3).run(null);
-        return outcomes.stream().collect(Collectors.toMap(t -> t.className().substring(5) + "." + t.method(), Function.identity()));
+        return outcomes.stream().collect(Collectors.toMap(t -> t.className().substring(t.className().lastIndexOf('.') + 1) + "." + t.method(), Function.identity()));
     }
 
     @Test(timeout = 300_000)
@@ -129,7 +131,7 @@ public class UnfinishedTaskSkipTest {
                 outcome("ray.surface.SphereTest", "c", 2, false, false, "stopped after 120 s: the test never finished"),
                 outcome("ray.surface.TriangleHardCasesBonusTest", "d", 3, true, false, "stopped after 120 s: the test never finished"),
                 outcome("ray.surface.GroupTest", "e", 4, false, false, "expected:<1> but was:<2>"),
-                hidden(outcome("ray.hidden.Task4HiddenTest", "f", 4, false, false, "stopped after 120 s: the test never finished")));
+                hidden(outcome("ray.hidden.GroupHiddenTest", "f", 4, false, false, "stopped after 120 s: the test never finished")));
         assertEquals("2=test SphereTest.b;3+bonus=test TriangleHardCasesBonusTest.d;4=a hidden test", TestProcess.unfinished(earlier));
         assertEquals("", TestProcess.unfinished(List.of()));
     }

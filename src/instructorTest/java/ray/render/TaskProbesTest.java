@@ -54,7 +54,7 @@ public class TaskProbesTest {
         assertNull(TaskProbes.stillStubsLine(EnumSet.noneOf(Part.class)));
     }
 
-    /** The parts are the students' files, task by task, as the tests' StudentTask lists them. */
+    /** The parts are the students' files, task by task, as the table of tasks lists them. */
     @Test
     public void thePartsAreTheStudentFiles() {
         for (StudentTask task : StudentTask.values()) {
@@ -62,7 +62,7 @@ public class TaskProbesTest {
                     .collect(Collectors.toList());
             assertEquals(task.label(), task.files, files);
         }
-        assertEquals(Part.values().length, Arrays.stream(StudentTask.values()).mapToInt(t -> t.files.size()).sum());
+        assertEquals(Part.values().length, StudentTask.values().stream().mapToInt(t -> t.files.size()).sum());
         for (Part part : Part.values()) {
             assertTrue(part.file, part.file.endsWith("/" + part.className + ".java"));
         }
@@ -92,7 +92,7 @@ public class TaskProbesTest {
             assertEquals(line, TaskProbes.stillStubsLine(partsNamed(expected)), line);
             String named = line.substring(0, line.indexOf(". "));
             for (StudentTask other : StudentTask.values()) {
-                assertEquals(line, other == task, named.contains("Task " + other.number + " ("));
+                assertEquals(line, other.equals(task), named.contains("Task " + other.number + " ("));
             }
         }
         Set<String> all = Arrays.stream(Part.values()).map(Part::name).collect(Collectors.toCollection(TreeSet::new));
@@ -133,11 +133,11 @@ public class TaskProbesTest {
 
     @Test
     public void theLineNamesTheStubsAndWhereToStart() {
-        assertEquals("Still stubs: Task 1 (cameras), Task 2 (Sphere), Task 3 (Triangle), Task 4 (Group), Task 5 (textures),"
+        assertEquals("Still stubs: Task 1 (Camera rays), Task 2 (Sphere), Task 3 (Triangle), Task 4 (Group), Task 5 (Textures),"
                 + " Task 6 (Cylinder, extra credit). Start with Task 1: the TODO(Task 1) comments in"
                 + " src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.allOf(Part.class)));
-        // After Task 1, docs/assignment.md suggests the group.
+        // After the cameras, the table of tasks' order (pictures earliest) puts the group.
         assertEquals("Still stubs: Task 2 (Sphere), Task 3 (Triangle), Task 4 (Group). Start with Task 4: the TODO(Task 4) comment in"
                 + " src/main/java/ray/surface/Group.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.SPHERE, Part.TRIANGLE, Part.GROUP)));
@@ -145,7 +145,7 @@ public class TaskProbesTest {
         assertEquals("Still stubs: Task 1 (OrthographicCamera), Task 5 (ClampTexture). Start with Task 1: the TODO(Task 1) comment in"
                 + " src/main/java/ray/camera/OrthographicCamera.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.ORTHOGRAPHIC_CAMERA, Part.CLAMP_TEXTURE)));
-        assertEquals("Still stubs: Task 5 (textures), Task 6 (Cylinder, extra credit). Start with Task 5: the TODO(Task 5) comments in"
+        assertEquals("Still stubs: Task 5 (Textures), Task 6 (Cylinder, extra credit). Start with Task 5: the TODO(Task 5) comments in"
                 + " src/main/java/ray/shading/RepeatTexture.java and ClampTexture.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.REPEAT_TEXTURE, Part.CLAMP_TEXTURE, Part.CYLINDER)));
         // The extra credit alone is offered, not prescribed.

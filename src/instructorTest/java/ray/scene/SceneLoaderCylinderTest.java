@@ -15,7 +15,7 @@ import ray.surface.Surface;
 /**
  * Checks {@code <surface type="Cylinder">}: its three properties and their defaults, and the located
  * errors for a size that is not positive. (Whether it is hit is the student's extra credit, tested
- * by CylinderBonusTest, so nothing here traces a ray.)
+ * by CylinderTest, so nothing here traces a ray.)
  */
 public class SceneLoaderCylinderTest {
     @Rule

@@ -4,97 +4,89 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.junit.Test;
+import ray.assignment.Task;
+import ray.assignment.TaskTable;
 
 /**
- * `gradle test -Ptask=N` picks a task's tests by class name patterns written in build.gradle
- * (testsOfTask). Every shipped test class must match exactly the patterns of the task its
- * {@link Points} names, or a task's run would miss some of its tests or run another task's.
+ * A graded test counts toward the task whose test patterns in the table of tasks match its class,
+ * and `gradle test -Ptask=N` runs the classes those patterns match: so every graded test class must
+ * match exactly one task's patterns, and every class a task's patterns match must be graded, or a
+ * task would count a test of another or miss one of its own.
  */
 public class TaskTestsTest {
-    private static final Pattern ENTRY = Pattern.compile("^\\s*'(\\d)':\\s*\\[(.*)\\]");
-    private static final Pattern QUOTED = Pattern.compile("'([^']*)'");
-
     @Test
-    public void everyShippedTestClassMatchesExactlyItsTasksPatterns() throws Exception {
-        Map<Integer, List<String>> patterns = patternsOfBuildGradle();
-        assertEquals("build.gradle's testsOfTask should name the tasks 1 to 6", List.of(1, 2, 3, 4, 5, 6), new ArrayList<>(patterns.keySet()));
+    public void everyGradedTestClassMatchesExactlyOneTasksPatterns() throws Exception {
         List<String> wrong = new ArrayList<>();
-        List<String> classes = shippedTestClasses();
+        List<String> classes = testClasses();
+        int graded = 0;
         for (String name : classes) {
-            Points points = Class.forName(name).getAnnotation(Points.class);
-            if (points == null) {
-                wrong.add(name + " has no class-level @Points naming its task");
-                continue;
+            boolean hasPoints = hasPoints(Class.forName(name));
+            List<String> owners = TaskTable.standard().all().stream().filter(t -> t.hasTestClass(name)).map(Task::id)
+                    .collect(Collectors.toList());
+            if (hasPoints && owners.size() != 1) {
+                wrong.add(name + " is graded but matches the test patterns of " + (owners.isEmpty() ? "no task" : String.join(" and ", owners)));
             }
-            for (Map.Entry<Integer, List<String>> task : patterns.entrySet()) {
-                boolean matches = task.getValue().stream().anyMatch(p -> matches(p, name));
-                if (matches != (task.getKey() == points.task().number)) {
-                    wrong.add(name + (matches ? " matches" : " does not match") + " the patterns of -Ptask=" + task.getKey()
-                            + " but belongs to Task " + points.task().number);
-                }
+            if (!hasPoints && !owners.isEmpty() && shipped(name)) {
+                wrong.add(name + " matches the test patterns of " + owners + " but has no @Points: a task's run would run an ungraded class");
             }
+            graded += hasPoints ? 1 : 0;
         }
         assertTrue(String.join("\n", wrong), wrong.isEmpty());
-        assertTrue("found too few shipped test classes to check: " + classes, classes.size() >= 15);
+        assertTrue("found too few graded test classes to check: " + classes, graded >= 20);
+    }
+
+    /** Every task of the table has graded tests, and a render test when it has scenes. */
+    @Test
+    public void everyTaskHasTests() throws Exception {
+        for (Task task : TaskTable.standard().all()) {
+            List<String> own = testClasses().stream().filter(task::hasTestClass).collect(Collectors.toList());
+            assertTrue(task.id() + " has no test classes", !own.isEmpty());
+            if (!task.scenes().isEmpty()) {
+                assertTrue(task.id() + " has scenes but no render test: " + own, own.stream().anyMatch(c -> c.startsWith("ray.endtoend.")));
+            }
+        }
     }
 
     @Test
     public void patternsAreReadTheWayGradleReadsThem() {
-        assertTrue(matches("ray.surface.Sphere*", "ray.surface.SphereTexCoordsTest"));
-        assertTrue(matches("ray.camera.*", "ray.camera.PerspectiveCameraTest"));
-        assertTrue(!matches("ray.surface.Sphere*", "ray.endtoend.SphereRenderTest"));
-        assertTrue(matches("ray.endtoend.SphereRenderTest", "ray.endtoend.SphereRenderTest"));
+        Task sphere = TaskTable.standard().get("sphere");
+        assertTrue(sphere.hasTestClass("ray.surface.SphereTexCoordsTest"));
+        assertTrue(sphere.hasTestClass("ray.endtoend.SphereRenderTest"));
+        assertTrue(!sphere.hasTestClass("ray.endtoend.SphereRenderTestX"));
+        assertTrue(!sphere.hasTestClass("ray.surface.TriangleTest"));
+        assertEquals("sphere", TaskTable.standard().ofTestClass("ray.hidden.SphereHiddenTest").orElseThrow().id());
     }
 
-    /** Gradle's test filter: '*' stands for any characters, everything else for itself. */
-    private static boolean matches(String pattern, String className) {
-        String regex = Stream.of(pattern.split("\\*", -1)).map(Pattern::quote).collect(Collectors.joining(".*"));
-        return className.matches(regex);
+    /** Whether the class ships to students (the instructor's own ungraded tests may share a task's patterns). */
+    private static boolean shipped(String className) {
+        return Files.isRegularFile(Path.of("src/test/java", className.replace('.', '/') + ".java"));
     }
 
-    private static Map<Integer, List<String>> patternsOfBuildGradle() throws IOException {
-        Map<Integer, List<String>> patterns = new LinkedHashMap<>();
-        boolean inMap = false;
-        for (String line : Files.readAllLines(Path.of("build.gradle"), StandardCharsets.UTF_8)) {
-            if (line.startsWith("def testsOfTask = [")) {
-                inMap = true;
-                continue;
-            }
-            if (inMap) {
-                Matcher entry = ENTRY.matcher(line);
-                if (!entry.find()) {
-                    break;
-                }
-                List<String> list = new ArrayList<>();
-                Matcher quoted = QUOTED.matcher(entry.group(2));
-                while (quoted.find()) {
-                    list.add(quoted.group(1));
-                }
-                patterns.put(Integer.parseInt(entry.group(1)), list);
+    /** A class's own @Points, or one on any of its methods. */
+    private static boolean hasPoints(Class<?> type) {
+        return type.getAnnotation(Points.class) != null
+                || Stream.of(type.getMethods()).anyMatch(m -> m.getAnnotation(Points.class) != null);
+    }
+
+    /** The top-level test classes (*Test) under src/test/java and the instructor's tests, by name. */
+    private static List<String> testClasses() throws IOException {
+        List<String> names = new ArrayList<>();
+        for (String folder : List.of("src/test/java", "src/instructorTest/java")) {
+            Path sources = Path.of(folder);
+            try (Stream<Path> files = Files.walk(sources)) {
+                files.filter(p -> p.toString().endsWith("Test.java"))
+                        .map(p -> sources.relativize(p).toString().replace('\\', '/').replace('/', '.').replaceAll("\\.java$", ""))
+                        .forEach(names::add);
             }
         }
-        return patterns;
-    }
-
-    /** The top-level test classes under src/test/java, by name. */
-    private static List<String> shippedTestClasses() throws IOException {
-        Path sources = Path.of("src/test/java");
-        try (Stream<Path> files = Files.walk(sources)) {
-            return files.filter(p -> p.toString().endsWith("Test.java"))
-                    .map(p -> sources.relativize(p).toString().replace('\\', '/').replace('/', '.').replaceAll("\\.java$", ""))
-                    .sorted().collect(Collectors.toList());
-        }
+        names.sort(null);
+        return names;
     }
 }

@@ -20,8 +20,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import java.util.zip.ZipEntry;
@@ -50,30 +48,17 @@ public class SubmissionZipTest {
             .filter(p -> p.endsWith(".jar")).collect(Collectors.joining(File.pathSeparator));
     private static final String SPHERE = "src/main/java/ray/surface/Sphere.java";
 
-    /** The script's list of files, the quoted paths between {@code def submissionFiles = [} and its {@code ]}. */
-    private static List<String> scriptsList(Path script) throws IOException {
-        String text = Files.readString(script, StandardCharsets.UTF_8);
-        int start = text.indexOf("def submissionFiles = [");
-        assertTrue(script + " has no list of submissionFiles", start >= 0);
-        String list = text.substring(start, text.indexOf(']', start));
+    /** The files the zip must hold, in order: the assignment's tasks' files, as the table of tasks lists them. */
+    private static List<String> assignmentsFiles() {
         List<String> files = new ArrayList<>();
-        Matcher quoted = Pattern.compile("'([^']*)'").matcher(list);
-        while (quoted.find()) {
-            files.add(quoted.group(1));
-        }
+        ray.assignment.Assignment.current().tasks().forEach(t -> files.addAll(t.projectFiles()));
         return files;
     }
 
-    /**
-     * The grader finds the student files by their solution markers; the students' build names them in a
-     * list. They must be the same files, or a zip would lack a file the grader grades (as the stub).
-     */
+    /** The grader takes the assignment's files: exactly those the zip holds, or it would grade a missing one as the stub. */
     @Test
-    public void theScriptListsExactlyTheFilesTheGraderTakes() throws IOException {
-        List<String> listed = scriptsList(PROJECT.resolve("gradle/submission.gradle"));
-        assertEquals("gradle/submission.gradle lists a file twice: " + listed, listed.size(), listed.stream().distinct().count());
-        assertEquals("gradle/submission.gradle's files against the grader's (ray.grading.StudentFiles)",
-                StudentFiles.in(PROJECT).keySet(), new java.util.TreeSet<>(listed));
+    public void theGraderTakesTheAssignmentsFiles() {
+        assertEquals(StudentFiles.in(PROJECT).keySet(), new java.util.TreeSet<>(assignmentsFiles()));
     }
 
     @Test(timeout = 900_000)
@@ -85,7 +70,7 @@ public class SubmissionZipTest {
         Path zip = handout.resolve("build/submission.zip");
 
         Map<String, byte[]> entries = read(zip);
-        List<String> expected = new ArrayList<>(scriptsList(handout.resolve("gradle/submission.gradle")));
+        List<String> expected = new ArrayList<>(assignmentsFiles());
         expected.add("MANIFEST.sha256");
         assertEquals(expected, new ArrayList<>(entries.keySet()));
         StringBuilder manifest = new StringBuilder();

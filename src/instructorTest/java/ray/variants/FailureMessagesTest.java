@@ -66,7 +66,7 @@ public class FailureMessagesTest {
     @Test
     public void aGroupWithItsOwnSegmentIsToldToSearchTheCallers() throws Exception {
         Variant wrong = Variant.wrong("group-own-segment", 4);
-        for (String[] c : new String[][] {{"ray.hidden.Task4HiddenTest#childrenSeeTheCallersOriginAndDirection",
+        for (String[] c : new String[][] {{"ray.hidden.GroupHiddenTest#childrenSeeTheCallersOriginAndDirection",
                 "your intersect returned t = 1.5; t = 1.5 is not inside the ray's segment (1.6, 10)"},
                 {"ray.surface.GroupTest#groupWhoseChildrenAllMissLeavesTheRecordUntouched",
                         "your intersect returned true with t = 4; t = 4 is not inside the ray's segment (0, 3.5)"}}) {

@@ -84,7 +84,7 @@ final class VariantGrading {
                             return d.getChildren().stream().anyMatch(this::shouldRun);
                         }
                         Annotation points = PointsAnnotation.of(d);
-                        return points != null && selection.includes(taskOf(points), d.getClassName());
+                        return points != null && selection.includes(taskOf(d.getClassName()), d.getClassName());
                     }
 
                     @Override
@@ -140,8 +140,17 @@ final class VariantGrading {
         return names;
     }
 
-    static int taskOf(Annotation points) {
-        return (Integer) PointsAnnotation.field(points, "task", "number");
+    /** The number of test class {@code className}'s task in this assignment (the table of tasks gives a class its task). */
+    static int taskOf(String className) {
+        return ray.assignment.Assignment.current().table().ofTestClass(className)
+                .map(t -> ray.assignment.Assignment.current().number(t.id())).orElse(0);
+    }
+
+    /** Whether the test is extra credit: its own @Points says so, or its task is. */
+    static boolean bonusOf(String className, Annotation points) {
+        ray.assignment.Assignment a = ray.assignment.Assignment.current();
+        return (Boolean) PointsAnnotation.element(points, "bonus")
+                || a.table().ofTestClass(className).map(t -> a.isExtraCredit(t.id())).orElse(false);
     }
 
     /** Turns JUnit's events into outcomes. */
@@ -171,8 +180,8 @@ final class VariantGrading {
         @Override
         public void testFinished(Description d) {
             Annotation points = PointsAnnotation.of(d);
-            outcomes.add(new Outcome(d.getClassName() + "#" + d.getMethodName(), taskOf(points),
-                    ((Number) PointsAnnotation.element(points, "value")).doubleValue(), (Boolean) PointsAnnotation.element(points, "bonus"), failure));
+            outcomes.add(new Outcome(d.getClassName() + "#" + d.getMethodName(), taskOf(d.getClassName()),
+                    ((Number) PointsAnnotation.element(points, "value")).doubleValue(), bonusOf(d.getClassName(), points), failure));
         }
     }
 }

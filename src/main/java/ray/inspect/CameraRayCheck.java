@@ -1,6 +1,7 @@
 package ray.inspect;
 
 import ray.Ray;
+import ray.assignment.Assignment;
 import ray.camera.Camera;
 
 /**
@@ -15,7 +16,7 @@ public final class CameraRayCheck {
     /** The explanation, or null when the ray can hit something. */
     public static String problem(Camera camera, Ray ray) {
         String method = camera.getClass().getSimpleName() + ".generateRay";
-        String hint = method + " is still the stub? See TODO(Task 1) in " + camera.getClass().getSimpleName() + ".java";
+        String hint = method + " is still the stub? See " + Assignment.current().todo("camera-rays") + " in " + camera.getClass().getSimpleName() + ".java";
         if (ray == null) {
             return "the camera returned no ray (null): " + hint;
         }
@@ -29,7 +30,7 @@ public final class CameraRayCheck {
         }
         if (ray.direction.lengthSquared() == 0) {
             return "the camera ray's direction is zero, so it cannot reach anything: " + method
-                    + " must point it through the image-plane point (TODO(Task 1))";
+                    + " must point it through the image-plane point (" + Assignment.current().todo("camera-rays") + ")";
         }
         if (!(ray.start < ray.end)) {
             String segment = ray.start == ray.end

@@ -4,6 +4,7 @@ import java.io.PrintWriter;
 import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.assignment.Assignment;
 import ray.math.Vec3;
 import ray.scene.Scene;
 
@@ -86,7 +87,7 @@ final class ClosestHitReport {
     /** What the group missed: "#1 Sphere … is hit at t = 4 when tested alone: is Group.intersect still the stub? …". */
     static String hitAlone(List<ProbeNode> roots, ProbeNode nearest, SurfaceNames names) {
         return ProbeTree.path(roots, nearest, names) + " is hit at t = " + Fmt.num(nearest.t())
-                + " when tested alone: is Group.intersect still the stub? See TODO(Task 4)";
+                + " when tested alone: is Group.intersect still the stub? See " + Assignment.current().todo("group");
     }
 
     /** What a hit's record lacks for shading ("the surface", "a shader", "the normal", "the location"), or null when it can be shaded. */
@@ -115,7 +116,7 @@ final class ClosestHitReport {
                 return culprit;
             }
             return "! the smallest t in the list above is " + Fmt.num(nearest.t()) + ", at " + ProbeTree.path(roots, nearest, names)
-                    + ": the group must keep the closest hit (shorten the ray to end at each hit's t). See TODO(Task 4)";
+                    + ": the group must keep the closest hit (shorten the ray to end at each hit's t). See " + Assignment.current().todo("group");
         }
         if (hit.surface != nearest.surface) {
             return "(a tie at t = " + Fmt.num(hit.t) + " with " + ProbeTree.path(roots, nearest, names) + ")";

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.assignment.Assignment;
 import ray.math.Vec3;
 import ray.scene.Scene;
 
@@ -66,7 +67,7 @@ final class ShadowCheck {
     String disagreement() {
         if (!blockers.isEmpty() && !blockedByGroup) {
             return "but the scene's group (Group.intersect) finds no blocker, so the renderer lights"
-                    + " this point anyway: is Group.intersect still the stub? See TODO(Task 4)";
+                    + " this point anyway: is Group.intersect still the stub? See " + Assignment.current().todo("group");
         }
         if (blockers.isEmpty() && blockedByGroup) {
             return "but the scene's group (Group.intersect) reports a blocker that no surface"

@@ -2,6 +2,7 @@ package ray.inspect;
 
 import java.io.PrintWriter;
 import ray.IntersectionRecord;
+import ray.assignment.Assignment;
 import ray.image.Image;
 import ray.math.Vec3;
 import ray.shading.TexelPick;
@@ -33,7 +34,7 @@ final class TextureReport {
         out.println(Fmt.row(in, "(u, v)", "(" + Fmt.num(hit.texU) + ", " + Fmt.num(hit.texV) + ")   (the hit's texture coordinates"
                 + (hit.surface == null ? "" : ", set by " + hit.surface.getClass().getSimpleName() + ".intersect") + ")"));
         if (hit.texU == 0 && hit.texV == 0 && SurfaceKind.of(hit.surface) == SurfaceKind.SPHERE) {
-            out.println(Fmt.row(in, "!", "(0, 0) is the sphere's south pole: does Sphere.intersect set texU and texV? See TODO(Task 2)"));
+            out.println(Fmt.row(in, "!", "(0, 0) is the sphere's south pole: does Sphere.intersect set texU and texV? See " + Assignment.current().todo("sphere")));
         }
         double columnAt = (double) u * w + 0.5; // in double, as getTexColor(double, double) computes it
         double rowAt = (1 - (double) v) * h + 0.5;
@@ -50,7 +51,7 @@ final class TextureReport {
             if (!kd.equals(texel)) {
                 out.println(Fmt.row(in, "!", texture.getClass().getSimpleName() + ".getTexColor returned " + Fmt.vec(kd)
                         + ", not that texel's color: " + whichTexel(TexelPick.of(texture, u, v), u, v, w, h, column, row, kd)
-                        + " See TODO(Task 5)"));
+                        + " See " + Assignment.current().todo("textures")));
             }
         } else {
             out.println(Fmt.row(in, "texel", "(" + column + ", " + row + ") before it is"

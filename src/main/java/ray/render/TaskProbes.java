@@ -3,13 +3,16 @@ package ray.render;
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.EnumSet;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.assignment.Assignment;
+import ray.assignment.Task;
+import ray.assignment.TaskTable;
 import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
@@ -39,37 +42,43 @@ import ray.surface.Triangle;
  * ray1 may run from anywhere. Code that throws is written, only broken: never a stub.
  */
 public final class TaskProbes {
-    /** The classes a student fills in: each one's task and file (docs/assignment.md's table). */
+    /**
+     * The classes a student may fill in, one probe each. Each one's task and file come from the table
+     * of tasks; a class of a task the assignment does not choose ships solved, and is never probed.
+     */
     public enum Part {
-        PERSPECTIVE_CAMERA(1, "PerspectiveCamera", "src/main/java/ray/camera/PerspectiveCamera.java"),
-        ORTHOGRAPHIC_CAMERA(1, "OrthographicCamera", "src/main/java/ray/camera/OrthographicCamera.java"),
-        SPHERE(2, "Sphere", "src/main/java/ray/surface/Sphere.java"),
-        TRIANGLE(3, "Triangle", "src/main/java/ray/surface/Triangle.java"),
-        GROUP(4, "Group", "src/main/java/ray/surface/Group.java"),
-        REPEAT_TEXTURE(5, "RepeatTexture", "src/main/java/ray/shading/RepeatTexture.java"),
-        CLAMP_TEXTURE(5, "ClampTexture", "src/main/java/ray/shading/ClampTexture.java"),
-        /** Extra credit. */
-        CYLINDER(6, "Cylinder", "src/main/java/ray/surface/Cylinder.java");
+        PERSPECTIVE_CAMERA("PerspectiveCamera"),
+        ORTHOGRAPHIC_CAMERA("OrthographicCamera"),
+        SPHERE("Sphere"),
+        TRIANGLE("Triangle"),
+        GROUP("Group"),
+        REPEAT_TEXTURE("RepeatTexture"),
+        CLAMP_TEXTURE("ClampTexture"),
+        CYLINDER("Cylinder");
 
+        /** Its task's id in the table. */
+        public final String taskId;
+        /** Its task's number in this assignment, or 0 when the task ships solved. */
         public final int task;
         public final String className;
         /** The file to edit, relative to the project folder. */
         public final String file;
 
-        Part(int task, String className, String file) {
-            this.task = task;
+        Part(String className) {
+            Task owner = TaskTable.standard().ofStudentClass(className)
+                    .orElseThrow(() -> new IllegalStateException(className + " is in no task's files in " + TaskTable.PROJECT_FILE));
+            this.taskId = owner.id();
+            this.task = Assignment.current().number(owner.id());
             this.className = className;
-            this.file = file;
+            this.file = owner.projectFiles().get(owner.classNames().indexOf(className));
+        }
+
+        /** Whether students write it in this assignment. */
+        public boolean isStudents() {
+            return task > 0;
         }
     }
 
-    /** The extra-credit task: named as such, and never the one to start with while a required task is a stub. */
-    static final int EXTRA_CREDIT = 6;
-    /** The order docs/assignment.md suggests, which gives pictures earliest: the first stub in it is where to start. */
-    private static final int[] SUGGESTED_ORDER = {1, 4, 2, 3, 5, 6};
-    /** Each task's name when all of its parts are stubs. */
-    private static final Map<Integer, String> TASK_TITLES = Map.of(1, "cameras", 2, "Sphere", 3, "Triangle", 4, "Group",
-            5, "textures", 6, "Cylinder, extra credit");
     /** How long {@link #stubs()} waits for the probes: code that has not answered by then is no stub (the stubs answer at once). */
     public static final long DEFAULT_LIMIT_MILLIS = 3000;
 
@@ -138,6 +147,9 @@ public final class TaskProbes {
         Map<Part, Finding> found = new ConcurrentHashMap<>();
         Map<Part, Thread> threads = new EnumMap<>(Part.class);
         for (Part part : Part.values()) {
+            if (!part.isStudents()) {
+                continue;
+            }
             Thread thread = new Thread(() -> found.put(part, probe(part)), "probe of " + part.className);
             thread.setDaemon(true);
             threads.put(part, thread);
@@ -166,53 +178,49 @@ public final class TaskProbes {
 
     /**
      * The line that says which tasks are still stubs and where to start, or null when none is:
-     * "Still stubs: Task 1 (cameras), Task 2 (Sphere), …. Start with Task 1: the TODO(Task 1)
+     * "Still stubs: Task 1 (Camera rays), Task 2 (Sphere), …. Start with Task 1: the TODO(Task 1)
      * comments in src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java (see
      * docs/assignment.md)." A task whose parts are only partly stubs is named by those parts
-     * ("Task 1 (OrthographicCamera)"). The task to start with is the first stub in the order
-     * docs/assignment.md suggests (1, 4, 2, 3, 5, then the extra credit). Plain ASCII, so that any
-     * console shows it.
+     * ("Task 1 (OrthographicCamera)"). The task to start with is the first stub in the table of
+     * tasks' order, which gives pictures earliest (the cameras, the group, then the shapes), an
+     * extra-credit task last. Plain ASCII, so that any console shows it.
      */
     public static String stillStubsLine(Set<Part> stubs) {
         if (stubs.isEmpty()) {
             return null;
         }
-        Map<Integer, List<Part>> byTask = new LinkedHashMap<>();
+        Assignment assignment = Assignment.current();
+        Map<Integer, List<Part>> byTask = new TreeMap<>();
         for (Part part : Part.values()) {
-            if (stubs.contains(part)) {
+            if (stubs.contains(part) && part.isStudents()) {
                 byTask.computeIfAbsent(part.task, t -> new ArrayList<>()).add(part);
             }
         }
+        if (byTask.isEmpty()) {
+            return null;
+        }
         List<String> named = new ArrayList<>();
         for (Map.Entry<Integer, List<Part>> entry : byTask.entrySet()) {
-            int task = entry.getKey();
+            Task task = assignment.task(entry.getKey()).orElseThrow();
             List<Part> parts = entry.getValue();
-            String title = parts.size() == partsOf(task).size() ? TASK_TITLES.get(task)
+            String title = parts.size() == task.classNames().size() ? task.title() + (assignment.isExtraCredit(task.id()) ? ", extra credit" : "")
                     : String.join(" and ", parts.stream().map(p -> p.className).toArray(String[]::new));
-            named.add("Task " + task + " (" + title + ")");
+            named.add("Task " + entry.getKey() + " (" + title + ")");
         }
-        int start = 0;
-        for (int task : SUGGESTED_ORDER) {
-            if (byTask.containsKey(task)) {
-                start = task;
-                break;
+        Task start = null;
+        for (boolean extraCredit : new boolean[] {false, true}) {
+            for (Task task : assignment.table().all()) {
+                if (start == null && assignment.isExtraCredit(task.id()) == extraCredit && byTask.containsKey(assignment.number(task.id()))) {
+                    start = task;
+                }
             }
         }
-        List<Part> files = byTask.get(start);
-        String where = "the TODO(Task " + start + ") " + (files.size() == 1 ? "comment" : "comments") + " in " + filesInWords(files)
+        int number = assignment.number(start.id());
+        List<Part> files = byTask.get(number);
+        String where = "the TODO(Task " + number + ") " + (files.size() == 1 ? "comment" : "comments") + " in " + filesInWords(files)
                 + " (see docs/assignment.md).";
-        String next = start == EXTRA_CREDIT ? "For the extra credit: " + where : "Start with Task " + start + ": " + where;
+        String next = assignment.isExtraCredit(start.id()) ? "For the extra credit: " + where : "Start with Task " + number + ": " + where;
         return (stubs.size() == 1 ? "Still a stub: " : "Still stubs: ") + String.join(", ", named) + ". " + next;
-    }
-
-    private static List<Part> partsOf(int task) {
-        List<Part> parts = new ArrayList<>();
-        for (Part part : Part.values()) {
-            if (part.task == task) {
-                parts.add(part);
-            }
-        }
-        return parts;
     }
 
     /** "src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java": later files in the first one's folder by name alone. */

@@ -2,7 +2,8 @@ package ray.surface;
 
 /**
  * What a camera ray's closest hit is, by the kind of primitive that reported it: the kinds the
- * renderer's pixel-kind record tells apart, each with the student task whose code found it. A mesh's
+ * renderer's pixel-kind record tells apart, each with the task whose code found it (by its id in the
+ * table of tasks, and its number in this assignment). A mesh's
  * or a box's triangles are triangles, and a primitive inside a transformed group is that primitive
  * (a hit's {@code surface} is always the primitive itself). Each primitive says its kind
  * ({@link Surface#kind()}): the shapes the framework gives each task ({@link SphereSurface},
@@ -13,24 +14,26 @@ package ray.surface;
  * background.
  */
 public enum SurfaceKind {
-    SPHERE(2, "a sphere", "spheres"),
-    TRIANGLE(3, "a triangle", "triangles"),
-    /** Task 6, the extra credit. */
-    CYLINDER(6, "a cylinder", "cylinders"),
+    SPHERE("sphere", "a sphere", "spheres"),
+    TRIANGLE("triangle", "a triangle", "triangles"),
+    CYLINDER("cylinder", "a cylinder", "cylinders"),
     /** A primitive of any other class (no scene file makes one: a test's or a study's own surface). */
-    OTHER(0, "another surface", "other surfaces"),
+    OTHER(null, "another surface", "other surfaces"),
     /** No hit: the ray left the scene and the pixel shows the background color. */
-    BACKGROUND(0, "the background", "the background");
+    BACKGROUND(null, "the background", "the background");
 
     private static final SurfaceKind[] ALL = values();
 
-    /** The number of the student task whose intersection code finds this kind, or 0 when none does. */
+    /** The id (in the table of tasks) of the task whose intersection code finds this kind, or null when none does. */
+    public final String taskId;
+    /** That task's number in this assignment, or 0 when there is none or it ships solved. */
     public final int task;
     private final String one;
     private final String many;
 
-    SurfaceKind(int task, String one, String many) {
-        this.task = task;
+    SurfaceKind(String taskId, String one, String many) {
+        this.taskId = taskId;
+        this.task = taskId == null ? 0 : ray.assignment.Assignment.current().number(taskId);
         this.one = one;
         this.many = many;
     }

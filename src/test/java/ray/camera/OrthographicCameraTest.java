@@ -6,7 +6,6 @@ import static ray.testing.Asserts.v;
 import org.junit.Rule;
 import org.junit.Test;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -14,10 +13,10 @@ import ray.testing.StudentTaskRule;
  * origin = viewPoint + planeU·u + planeV·v, direction = −w, with the image-plane coordinates
  * planeU = (imageU − ½)·viewWidth and planeV = (imageV − ½)·viewHeight, and a segment from 0 to +∞.
  */
-@Points(value = 1, task = StudentTask.CAMERA)
+@Points(1)
 public class OrthographicCameraTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CAMERA);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final String DEFAULT = "the default OrthographicCamera (at the origin looking down −z, 1×1 plane)";
     private static final String ROTATED = "the OrthographicCamera at (1,2,3) looking along +x with +z up, 4×2 plane";
@@ -50,7 +49,7 @@ public class OrthographicCameraTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.CAMERA)
+    @Points(2)
     public void defaultCameraCornerRaysAreParallelAndStartOnTheImagePlaneCorners() {
         OrthographicCamera camera = defaultCamera();
         assertRay(DEFAULT, camera, 0, 0, v(-0.5, -0.5, 0), v(0, 0, -1));
@@ -65,7 +64,7 @@ public class OrthographicCameraTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.CAMERA)
+    @Points(2)
     public void rotatedCameraCornerRaysUseItsBasisAndNonSquarePlane() {
         OrthographicCamera camera = rotatedCamera();
         // (0,0): planeU = −2, planeV = −1 → (1, 4, 2); the other corners flip their signs.

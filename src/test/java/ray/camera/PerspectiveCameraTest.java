@@ -7,7 +7,6 @@ import org.junit.Rule;
 import org.junit.Test;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -16,10 +15,10 @@ import ray.testing.StudentTaskRule;
  * coordinates planeU = (imageU − ½)·viewWidth and planeV = (imageV − ½)·viewHeight, and a segment
  * from 0 to +∞.
  */
-@Points(value = 1, task = StudentTask.CAMERA)
+@Points(1)
 public class PerspectiveCameraTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CAMERA);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final String DEFAULT = "the default PerspectiveCamera (at the origin looking down −z, 1×1 plane at distance 1)";
     private static final String ROTATED = "the PerspectiveCamera at (1,2,3) looking along +x with +z up, 4×2 plane at distance 2";
@@ -55,7 +54,7 @@ public class PerspectiveCameraTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.CAMERA)
+    @Points(2)
     public void defaultCameraCornerRaysGoThroughImagePlaneCorners() {
         PerspectiveCamera camera = defaultCamera();
         assertRay(DEFAULT, camera, 0, 0, Vec3.ZERO, v(-0.5, -0.5, -1));
@@ -70,7 +69,7 @@ public class PerspectiveCameraTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.CAMERA)
+    @Points(2)
     public void rotatedCameraCornerRaysUseItsBasisAndNonSquarePlane() {
         PerspectiveCamera camera = rotatedCamera();
         // (imageU, imageV) = (0,0): planeU = −2, planeV = −1 → (2, 2, −1); the other corners flip their signs.

@@ -1,6 +1,7 @@
 package ray.endtoend;
 
-import java.util.EnumSet;
+import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.Set;
 import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
@@ -29,51 +30,55 @@ final class BasicChecks {
     private BasicChecks() {
     }
 
-    /** The tasks whose code renders {@code scene}: the camera and the group always, and each primitive or texture it holds. */
+    /**
+     * The tasks of this assignment whose code renders {@code scene}, in their order: the camera and
+     * the group always, and each primitive or texture it holds (a task the assignment does not choose
+     * ships solved, and is never to blame).
+     */
     static Set<StudentTask> tasksOf(Scene scene) {
-        Set<StudentTask> tasks = EnumSet.of(StudentTask.CAMERA, StudentTask.GROUP);
-        addTasksOf(scene.getSurfaces(), tasks);
+        Set<String> ids = new HashSet<>(Set.of("camera-rays", "group"));
+        addTasksOf(scene.getSurfaces(), ids);
         // Texture lookups, as the renderer's plan counts them: a lit shader with a texture on any
         // surface, named in the scene or written inline in the shader.
         if (RenderPlan.of(scene).runs(Effect.TEXTURES)) {
-            tasks.add(StudentTask.TEXTURE);
+            ids.add("textures");
+        }
+        Set<StudentTask> tasks = new LinkedHashSet<>();
+        for (StudentTask task : StudentTask.values()) {
+            if (ids.contains(task.id)) {
+                tasks.add(task);
+            }
         }
         return tasks;
     }
 
-    private static void addTasksOf(Surface surface, Set<StudentTask> tasks) {
+    private static void addTasksOf(Surface surface, Set<String> ids) {
         // The primitive's task as the renderer's pixel kinds name it (a mesh's or box's parts are triangles).
-        int number = SurfaceKind.of(surface).task;
-        for (StudentTask task : StudentTask.values()) {
-            if (task.number == number) {
-                tasks.add(task);
-            }
+        String id = SurfaceKind.of(surface).taskId;
+        if (id != null) {
+            ids.add(id);
         }
         for (Surface child : surface.children()) {
-            addTasksOf(child, tasks);
+            addTasksOf(child, ids);
         }
     }
 
-    /** What the task's code gets wrong in its plain check, or null when the check passes. */
+    /**
+     * What the task's code gets wrong in its plain check, or null when the check passes: the probes
+     * of its classes in the table's order, of a camera class only when it is the scene's camera.
+     */
     static String problem(StudentTask task, Scene scene) {
-        switch (task) {
-            case CAMERA:
-                Part camera = cameraPart(scene.getCamera());
-                return camera == null ? null : TaskProbes.probe(camera).problem;
-            case SPHERE:
-                return TaskProbes.probe(Part.SPHERE).problem;
-            case TRIANGLE:
-                return TaskProbes.probe(Part.TRIANGLE).problem;
-            case GROUP:
-                return TaskProbes.probe(Part.GROUP).problem;
-            case TEXTURE:
-                String repeat = TaskProbes.probe(Part.REPEAT_TEXTURE).problem;
-                return repeat != null ? repeat : TaskProbes.probe(Part.CLAMP_TEXTURE).problem;
-            case CYLINDER:
-                return TaskProbes.probe(Part.CYLINDER).problem;
-            default:
-                return null;
+        Part sceneCamera = cameraPart(scene.getCamera());
+        for (Part part : Part.values()) {
+            boolean camera = part == Part.PERSPECTIVE_CAMERA || part == Part.ORTHOGRAPHIC_CAMERA;
+            if (part.taskId.equals(task.id) && (!camera || part == sceneCamera)) {
+                String problem = TaskProbes.probe(part).problem;
+                if (problem != null) {
+                    return problem;
+                }
+            }
         }
+        return null;
     }
 
     /** The scene's kind of camera: the one whose code renders it (a camera of the framework's own has no check). */

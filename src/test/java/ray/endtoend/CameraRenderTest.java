@@ -7,15 +7,14 @@ import org.junit.runner.RunWith;
 import org.junit.runners.Parameterized;
 import org.junit.runners.Parameterized.Parameters;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
-/** Task 1's scenes (see {@link RenderScenes#TASKS}), each rendered at full size and compared with its reference. */
+/** The camera-rays task's scenes (its {@code scenes} in the table of tasks), each rendered at full size and compared with its reference. */
 @RunWith(Parameterized.class)
-@Points(value = 2, task = StudentTask.CAMERA)
+@Points(2)
 public class CameraRenderTest extends RenderTestBase {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CAMERA).withTimeoutSeconds(TIMEOUT_SECONDS);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass()).withTimeoutSeconds(TIMEOUT_SECONDS);
 
     public CameraRenderTest(String scene) {
         super(scene);
@@ -23,16 +22,11 @@ public class CameraRenderTest extends RenderTestBase {
 
     @Parameters(name = "{0}")
     public static List<Object[]> scenes() {
-        return RenderScenes.scenesOf(StudentTask.CAMERA);
+        return RenderScenes.scenesOf(CameraRenderTest.class);
     }
 
     @BeforeClass
     public static void clearReport() {
         RenderDiffReport.clear(CameraRenderTest.class);
-    }
-
-    @Override
-    protected StudentTask task() {
-        return StudentTask.CAMERA;
     }
 }

@@ -7,6 +7,8 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import ray.assignment.Task;
+import ray.assignment.TaskTable;
 import ray.image.PngWriter;
 import ray.render.PixelKinds;
 import ray.render.RenderResult;
@@ -14,7 +16,6 @@ import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneFiles;
 import ray.testing.ProjectFolder;
-import ray.testing.StudentTask;
 
 /**
  * The shipped scenes (every *.xml under scenes/, except the reference folder), the task each one's
@@ -36,45 +37,18 @@ final class RenderScenes {
     }
 
     /**
-     * The task whose code each scene exercises most. Every scene under scenes/ must be listed here
-     * exactly once ({@link SceneTasksTest} fails otherwise), so a new scene cannot go ungraded.
+     * The task whose code each scene exercises most, as the table of tasks lists them under each
+     * task's {@code scenes}: the render test of that task renders it. {@link SceneTasksTest} checks
+     * that every scene under scenes/ is some task's, once, so a new scene cannot go ungraded.
      */
-    static final Map<String, StudentTask> TASKS;
-
-    static {
-        Map<String, StudentTask> tasks = new LinkedHashMap<>();
-        // Task 1: an orthographic view, and 16 samples per pixel at arbitrary image points.
-        tasks.put("wire-box-ortho", StudentTask.CAMERA);
-        tasks.put("antialiased", StudentTask.CAMERA);
-        // Task 2: spheres alone.
-        tasks.put("one-sphere", StudentTask.SPHERE);
-        tasks.put("one-sphere-phong", StudentTask.SPHERE);
-        // Task 3: meshes and boxes (boxes are 12 triangles each), flat and interpolated normals.
-        tasks.put("mesh-flat", StudentTask.TRIANGLE);
-        tasks.put("mesh-smooth", StudentTask.TRIANGLE);
-        tasks.put("two-boxes", StudentTask.TRIANGLE);
-        tasks.put("rgb-normals", StudentTask.TRIANGLE);
-        // A box given upside down (minPt.y above maxPt.y), built as given: its top's normal points down.
-        tasks.put("inverted-box", StudentTask.TRIANGLE);
-        // Task 4: overlapping surfaces, nested transformed groups, reflection rays.
-        tasks.put("wire-box", StudentTask.GROUP);
-        tasks.put("group-transforms", StudentTask.GROUP);
-        tasks.put("glazed-sphere", StudentTask.GROUP);
-        // Textured scenes (scenes/textured), each under the task whose mistakes it shows most plainly:
-        // the globe's marks show the sphere's (u, v), the tablecloth the triangles' blended vt, and
-        // the eclipse and the diagnostic chart the repeat and clamp lookups.
-        tasks.put("globe", StudentTask.SPHERE);
-        tasks.put("tablecloth", StudentTask.TRIANGLE);
-        tasks.put("eclipse", StudentTask.TEXTURE);
-        tasks.put("diagnostic", StudentTask.TEXTURE);
-        // Task 6 (extra credit): capped cylinders, upright and placed by a group.
-        tasks.put("cylinder", StudentTask.CYLINDER);
-        // The numerically hard cases (scenes/hard, docs/numerics.md), each under the task whose code it strains most.
-        tasks.put("far-tiny-sphere", StudentTask.SPHERE);
-        tasks.put("huge-ground-sphere", StudentTask.SPHERE);
-        tasks.put("inside-closed-mesh", StudentTask.TRIANGLE);
-        tasks.put("far-from-origin", StudentTask.GROUP);
-        TASKS = Collections.unmodifiableMap(tasks);
+    static Map<String, Task> tasksOfScenes() {
+        Map<String, Task> tasks = new LinkedHashMap<>();
+        for (Task task : TaskTable.standard().all()) {
+            for (String scene : task.scenes()) {
+                tasks.putIfAbsent(scene, task);
+            }
+        }
+        return Collections.unmodifiableMap(tasks);
     }
 
     private RenderScenes() {
@@ -109,14 +83,14 @@ final class RenderScenes {
         return file.isAbsolute() && file.normalize().startsWith(project) ? project.relativize(file.normalize()) : file;
     }
 
-    /** The parameters of a task's render test: the names of its scenes, as one-element arrays. */
-    static List<Object[]> scenesOf(StudentTask task) {
+    /** The parameters of a render test class: the names of its task's scenes, as one-element arrays. */
+    static List<Object[]> scenesOf(Class<?> renderTest) {
         List<Object[]> list = new ArrayList<>();
-        TASKS.forEach((name, t) -> {
-            if (t == task) {
-                list.add(new Object[] {name});
-            }
-        });
+        Task task = TaskTable.standard().ofTestClass(renderTest.getName()).orElseThrow(() -> new IllegalStateException(
+                renderTest.getName() + " matches no task's tests in " + TaskTable.PROJECT_FILE));
+        for (String name : task.scenes()) {
+            list.add(new Object[] {name});
+        }
         return list;
     }
 

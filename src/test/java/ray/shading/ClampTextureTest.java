@@ -4,7 +4,6 @@ import static ray.shading.TextureLookups.assertTexel;
 
 import org.junit.Test;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 
 /**
  * Checks ClampTexture.getTexColor on a 4×3 image of distinct texels: column (int)(u·W + ½) and row
@@ -12,7 +11,7 @@ import ray.testing.StudentTask;
  * General points inside are at least 0.2 of a texel from an edge between texels; the edge cases are
  * hand-computed. What it does inside the image, as RepeatTexture does: {@link TextureLookupCases}.
  */
-@Points(value = 1, task = StudentTask.TEXTURE)
+@Points(1)
 public class ClampTextureTest extends TextureLookupCases {
     private static final String RULE = "the texel is column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5) counted from the"
             + " top (Math.floor instead of (int) is accepted too), each clamped to 0…W−1 and 0…H−1, read with texel(column, row)";
@@ -26,7 +25,7 @@ public class ClampTextureTest extends TextureLookupCases {
      * wraps to the top); u = 1 gives column 4, clamped to 3.
      */
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE)
+    @Points(2)
     public void theImagesEdgesClampAsTheCourseDoes() {
         assertTexel(RULE, texture, W, H, 0.0, 0.0, 0, 2);
         assertTexel(RULE, texture, W, H, 1.0, 0.0, 3, 2);
@@ -34,7 +33,7 @@ public class ClampTextureTest extends TextureLookupCases {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE)
+    @Points(2)
     public void coordinatesBeyondTheImageReadItsEdge() {
         check(1.0, 0.4); // u·W + ½ = 4.5 → column 4, clamped to 3 (not wrapped to 0)
         check(0.97, 0.03); // column 4 and row 3, both one past the last: the bottom-right texel

@@ -4,7 +4,6 @@ import static ray.shading.TextureLookups.assertTexel;
 
 import org.junit.Test;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 
 /**
  * Checks RepeatTexture.getTexColor on a 4×3 image of distinct texels: column (int)(u·W + ½) and row
@@ -12,7 +11,7 @@ import ray.testing.StudentTask;
  * u = column/W, v = 1 − row/H. The general cases keep at least 0.2 of a texel from any edge between
  * texels (see {@link TextureLookups} on what is accepted where); the edge cases are hand-computed.
  */
-@Points(value = 1, task = StudentTask.TEXTURE)
+@Points(1)
 public class RepeatTextureTest extends TextureLookupCases {
     private static final String RULE = "the texel is column (int)(u·W + 0.5) and row (int)((1 − v)·H + 0.5) counted from the"
             + " top (Math.floor instead of (int) is accepted too), each wrapped into 0…W−1 and 0…H−1 (Math.floorMod), read with"
@@ -28,7 +27,7 @@ public class RepeatTextureTest extends TextureLookupCases {
      * reads its top row, as the course's renderer does; likewise u = 1 reads column 0.
      */
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE)
+    @Points(2)
     public void theImagesEdgesWrapAsTheCourseDoes() {
         assertTexel(RULE, texture, W, H, 0.0, 0.0, 0, 0);
         assertTexel(RULE, texture, W, H, 0.5, 0.0, 2, 0);
@@ -53,7 +52,7 @@ public class RepeatTextureTest extends TextureLookupCases {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE)
+    @Points(2)
     public void negativeCoordinatesWrapIntoTheImage() {
         // Java's % keeps the sign: −1 % 4 is −1, not a column. Either nearest-texel rounding is accepted where they part.
         check(-0.25, 0.9);

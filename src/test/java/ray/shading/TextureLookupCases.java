@@ -10,7 +10,6 @@ import org.junit.Rule;
 import org.junit.Test;
 import ray.image.Image;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -23,7 +22,7 @@ public abstract class TextureLookupCases {
     static final int H = 3;
 
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TEXTURE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     /** The lookup's rule, as a failure message states it. */
     final String rule;
@@ -48,7 +47,7 @@ public abstract class TextureLookupCases {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE)
+    @Points(2)
     public void eachTexelIsReadNearItsCenter() {
         // Texel (column, row)'s center is at u = column/W, v = 1 − row/H; ±0.3 of a texel still reads it.
         nearEachTexelCenter(W, H, this::check);

@@ -20,7 +20,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -31,10 +30,10 @@ import ray.testing.StudentTaskRule;
  * <p>The children are {@link FixedHitSurface}s, hit at a fixed t, so these tests pass with any
  * Sphere and Triangle, finished or not.
  */
-@Points(value = 1, task = StudentTask.GROUP)
+@Points(1)
 public class GroupTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.GROUP);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     /** Three children hit at t = 4, 9 and 14, each with its own normal. */
     private final FixedHitSurface near = new FixedHitSurface("near", 4, v(0, 0, 1));
@@ -55,7 +54,7 @@ public class GroupTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.GROUP)
+    @Points(2)
     public void closestHitWinsInEveryOrderOfTheChildren() {
         for (List<Surface> order : permutations(List.<Surface>of(near, middle, far))) {
             Group group = groupOf(order.toArray(new Surface[0]));
@@ -69,7 +68,7 @@ public class GroupTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.GROUP)
+    @Points(2)
     public void equalTieKeepsTheEarlierChild() {
         FixedHitSurface first = new FixedHitSurface("first", 5, v(0, 0, 1));
         FixedHitSurface second = new FixedHitSurface("second", 5, v(0, 1, 0));
@@ -136,7 +135,7 @@ public class GroupTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.GROUP)
+    @Points(2)
     public void nestedGroupsReportTheClosestPrimitive() {
         Group outer = groupOf(middle, groupOf(far, near));
         IntersectionRecord out = new IntersectionRecord();

@@ -20,7 +20,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -35,10 +34,10 @@ import ray.testing.StudentTaskRule;
  * their distance from the center is exactly the radius, or exactly one ulp off it. All rays are
  * seeded or enumerated, so every run sees the same cases.
  */
-@Points(value = 1, task = StudentTask.SPHERE, bonus = true)
+@Points(value = 1, bonus = true)
 public class SphereHardCasesBonusTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     /** The relative error allowed in t against the exact root: about 4500 ulps (the solution's is at most 2 on these rays). */
     private static final double ROOT_TOLERANCE = 1e-12;

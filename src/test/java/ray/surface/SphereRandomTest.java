@@ -15,7 +15,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -28,14 +27,14 @@ import ray.testing.StudentTaskRule;
  * rays, while a stable formulation stays near 1e-13. Any real mistake (a wrong root, a normal not
  * divided by the radius) is off by far more than 1e-7.
  */
-@Points(value = 2, task = StudentTask.SPHERE)
+@Points(2)
 public class SphereRandomTest {
     private static final MathContext MC = MathContext.DECIMAL128;
     /** Relative distance from the sphere allowed for the location, and the normal's allowed length error. */
     private static final double ON_SPHERE = 1e-7;
 
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     @Test
     public void hitsAgreeWithHighPrecisionRootsOfTheQuadratic() {

@@ -19,7 +19,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -27,10 +26,10 @@ import ray.testing.StudentTaskRule;
  * and unit outward normal, the strict (start, end) segment, and that a miss leaves the record alone.
  * Each miss is paired with a nearby hit so that a sphere that never hits fails too.
  */
-@Points(value = 1, task = StudentTask.SPHERE)
+@Points(1)
 public class SphereTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final double TOL = 1e-14;
     private final Sphere unit = new Sphere(Vec3.ZERO, 1);
@@ -41,7 +40,7 @@ public class SphereTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.SPHERE)
+    @Points(2)
     public void hitFromOutsideReturnsNearRoot() {
         // |(0,0,5) − t(0,0,1)|² = 1 → t = 4 or 6.
         IntersectionRecord out = new IntersectionRecord();
@@ -53,7 +52,7 @@ public class SphereTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.SPHERE)
+    @Points(2)
     public void hitFromInsideReturnsFarRootWithOutwardNormal() {
         IntersectionRecord out = new IntersectionRecord();
         String ray = "the ray from the center (0,0,0) toward −z";

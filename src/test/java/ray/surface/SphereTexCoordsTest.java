@@ -9,7 +9,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -17,10 +16,10 @@ import ray.testing.StudentTaskRule;
  * u = ½ + atan2(x, z)/2π and v = ½ + asin(y)/π. No hit is on the seam (the −z half-plane x = 0,
  * where u jumps from 1 to 0) or at a pole (where u is undefined), where equally correct code differs.
  */
-@Points(value = 1, task = StudentTask.SPHERE)
+@Points(1)
 public class SphereTexCoordsTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final double TOL = 1e-9;
 
@@ -36,7 +35,7 @@ public class SphereTexCoordsTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.SPHERE)
+    @Points(2)
     public void theEquatorFromFourSides() {
         Sphere unit = new Sphere(Vec3.ZERO, 1);
         // (0,0,1): atan2(0, 1) = 0. (1,0,0): atan2(1, 0) = π/2, so u = ¾. (−1,0,0): u = ¼.
@@ -60,7 +59,7 @@ public class SphereTexCoordsTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.SPHERE)
+    @Points(2)
     public void theNormalNotTheHitPointGivesTheCoordinates() {
         // Center (2, −1, 3), radius 2: the hit center + 2·n with n = (0.48, 0.6, 0.64), reached from
         // center + 6n along −2.5n (an unnormalized direction), so t = 4/2.5.

@@ -20,7 +20,6 @@ import ray.AnswerRounds;
 import ray.scene.ObjReader;
 import ray.testing.Points;
 import ray.testing.ProjectFolder;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -36,10 +35,10 @@ import ray.testing.StudentTaskRule;
  * fails too. Only Triangle is used (the mesh is looped over here, not put in a Group), and every
  * ray is seeded, so every run sees the same cases.
  */
-@Points(value = 1, task = StudentTask.TRIANGLE, bonus = true)
+@Points(value = 1, bonus = true)
 public class TriangleHardCasesBonusTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TRIANGLE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     /**
      * The shipped closed mesh scenes/meshes/icosphere-room.obj (an icosahedron subdivided twice: 320

@@ -13,17 +13,16 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
  * Property test of Triangle.intersect on seeded random triangles and rays aimed at random interior
  * points: every ray hits, the barycentrics reproduce the location, and the location lies on the ray.
  */
-@Points(value = 2, task = StudentTask.TRIANGLE)
+@Points(2)
 public class TriangleRandomTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TRIANGLE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     @Test
     public void barycentricsReproduceTheLocation() {

@@ -18,7 +18,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -27,10 +26,10 @@ import ray.testing.StudentTaskRule;
  * segment miss and leave the record alone. Each miss is paired with a nearby hit so that a triangle
  * that never hits fails too.
  */
-@Points(value = 1, task = StudentTask.TRIANGLE)
+@Points(1)
 public class TriangleTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TRIANGLE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final double TOL = 1e-14;
     /** The right triangle (0,0,2), (4,0,2), (0,2,2) in the plane z = 2: a point is (4β, 2γ, 2). */
@@ -47,7 +46,7 @@ public class TriangleTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.TRIANGLE)
+    @Points(2)
     public void hitInsideGivesHandComputedValues() {
         // (1, 0.5) = (4β, 2γ) → β = γ = 0.25.
         IntersectionRecord out = new IntersectionRecord();
@@ -59,7 +58,7 @@ public class TriangleTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.TRIANGLE)
+    @Points(2)
     public void slantedTriangleAndNonUnitDirection() {
         // Plane x + y + z = 1; the ray t(1,2,3) meets it at t = 1/6, at (1/6, 1/3, 1/2).
         // (1 − β − γ)(1,0,0) + β(0,1,0) + γ(0,0,1) = (1/6, 1/3, 1/2) → β = 1/3, γ = 1/2.

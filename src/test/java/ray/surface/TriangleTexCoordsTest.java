@@ -9,7 +9,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -17,10 +16,10 @@ import ray.testing.StudentTaskRule;
  * γ·vt2, using the x and y of each vt (its third number is unused), and (0, 0) for a triangle
  * whose corners have none.
  */
-@Points(value = 1, task = StudentTask.TRIANGLE)
+@Points(1)
 public class TriangleTexCoordsTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TRIANGLE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final double TOL = 1e-12;
 
@@ -44,7 +43,7 @@ public class TriangleTexCoordsTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.TRIANGLE)
+    @Points(2)
     public void coordinatesBlendTheCornersByTheBarycentrics() {
         // v0 = origin, v1 = x, v2 = y: the point (x, y, 0) has β = x and γ = y.
         Triangle triangle = textured(v(0, 0, 0), v(1, 0, 0), v(0, 1, 0), v(0.1, 0.2, 0), v(0.9, 0.3, 0), v(0.4, 0.8, 0));

@@ -6,7 +6,8 @@ import java.lang.annotation.RetentionPolicy;
 import java.lang.annotation.Target;
 
 /**
- * Marks a test as graded: it is worth {@code value} points toward {@code task}. On a class, it
+ * Marks a test as graded: it is worth {@code value} points toward its task, the task whose test
+ * classes the table of tasks says it is one of ({@link StudentTask#ofTestClass}). On a class, it
  * applies to every test method of the class that has no {@code @Points} of its own.
  *
  * <p>Tests under src/test/java ship to students and must be {@link Visibility#VISIBLE}; hidden
@@ -20,12 +21,11 @@ import java.lang.annotation.Target;
 public @interface Points {
     double value();
 
-    StudentTask task();
-
     Visibility visibility() default Visibility.VISIBLE;
 
     /**
-     * Extra credit: the test is worth {@code value} points on top of the maximum when it passes and
+     * Extra credit, within a required task (every test of an extra-credit task is extra credit
+     * anyway): the test is worth {@code value} points on top of the maximum when it passes and
      * nothing when it fails. In Gradescope's results.json its entry has {@code max_score} =
      * {@code value} and {@code score} = {@code value} when passed, and the total's maximum leaves it
      * out; Gradescope shows a score above the maximum as extra credit. Its failure message names the task with ", bonus" (see {@link StudentTaskRule}).

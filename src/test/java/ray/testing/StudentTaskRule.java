@@ -11,10 +11,12 @@ import org.junit.runners.model.Statement;
  * costs that test only; when grading, it also ends its task's run, see {@link UnfinishedTasks}), and
  * failure messages that say which task failed and where to work.
  *
- * <pre>{@code @Rule public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);}</pre>
+ * <pre>{@code @Rule public final StudentTaskRule task = StudentTaskRule.of(getClass());}</pre>
+ *
+ * <p>The test class's task is the one whose test patterns in the table of tasks match its name.
  *
  * <p>A failure reads "[Task 2 (Sphere)] what went wrong", or "[Task 2 (Sphere), bonus] ..." for a
- * test whose {@link Points} says {@code bonus = true}, so that a student sees at once that a
+ * test whose {@link Points} says {@code bonus = true} or whose task is extra credit, so that a student sees at once that a
  * failure costs no regular points.
  */
 public final class StudentTaskRule implements TestRule {
@@ -29,8 +31,9 @@ public final class StudentTaskRule implements TestRule {
         this.seconds = seconds;
     }
 
-    public static StudentTaskRule of(StudentTask task) {
-        return new StudentTaskRule(task, UNIT_TEST_SECONDS);
+    /** The rule of a test class: its task is the one the table of tasks gives that class. */
+    public static StudentTaskRule of(Class<?> testClass) {
+        return new StudentTaskRule(StudentTask.ofTestClass(testClass), UNIT_TEST_SECONDS);
     }
 
     /** The same rule with a longer limit, e.g. for whole-scene renders. */
@@ -44,7 +47,7 @@ public final class StudentTaskRule implements TestRule {
 
     @Override
     public Statement apply(Statement base, Description description) {
-        boolean bonus = isBonus(description);
+        boolean bonus = task.extraCredit || isBonus(description);
         String label = labelOf(task, bonus);
         Statement limited = Timeout.builder().withTimeout(seconds, TimeUnit.SECONDS).withLookingForStuckThread(true)
                 .build().apply(base, description);

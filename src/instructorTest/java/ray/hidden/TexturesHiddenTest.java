@@ -15,7 +15,6 @@ import ray.shading.RepeatTexture;
 import ray.shading.Texture;
 import ray.shading.TextureLookupsAccess;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 import ray.testing.Visibility;
 
@@ -26,10 +25,10 @@ import ray.testing.Visibility;
  * on every shape up to 8×8; and the lookup as the shaders call it, through a hit's texture
  * coordinates. Texels are named (column, row), the row counted from the top.
  */
-@Points(value = 1, task = StudentTask.TEXTURE, visibility = Visibility.HIDDEN)
-public class Task5HiddenTest {
+@Points(value = 1, visibility = Visibility.HIDDEN)
+public class TexturesHiddenTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TEXTURE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final int CASES = 400;
 
@@ -63,13 +62,13 @@ public class Task5HiddenTest {
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE, visibility = Visibility.HIDDEN)
+    @Points(value = 2, visibility = Visibility.HIDDEN)
     public void repeatOnImagesOfEveryShape() {
         randomLookups(5_000_001, true);
     }
 
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE, visibility = Visibility.HIDDEN)
+    @Points(value = 2, visibility = Visibility.HIDDEN)
     public void clampOnImagesOfEveryShape() {
         randomLookups(5_000_002, false);
     }
@@ -80,7 +79,7 @@ public class Task5HiddenTest {
      * corners of [0, 1]² read the top-left texel) and Clamp the last column and the bottom row.
      */
     @Test
-    @Points(value = 2, task = StudentTask.TEXTURE, visibility = Visibility.HIDDEN)
+    @Points(value = 2, visibility = Visibility.HIDDEN)
     public void theImagesEdgesOnImagesOfEveryShape() {
         for (int width = 1; width <= 8; width++) {
             for (int height = 1; height <= 8; height++) {

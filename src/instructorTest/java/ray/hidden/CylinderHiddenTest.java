@@ -17,7 +17,6 @@ import ray.Ray;
 import ray.math.Vec3;
 import ray.surface.Cylinder;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 import ray.testing.Visibility;
 
@@ -32,10 +31,10 @@ import ray.testing.Visibility;
  * d must hit at t = s, at P, with P's normal. Points are kept a margin away from the rims, where the
  * side and a cap meet and either normal would be fair.
  */
-@Points(value = 1, task = StudentTask.CYLINDER, bonus = true, visibility = Visibility.HIDDEN)
-public class Task6HiddenTest {
+@Points(value = 1, visibility = Visibility.HIDDEN)
+public class CylinderHiddenTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CYLINDER);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final int RAYS = 300;
 

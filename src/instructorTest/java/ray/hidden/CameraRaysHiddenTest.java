@@ -14,7 +14,6 @@ import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 import ray.testing.Visibility;
 
@@ -22,10 +21,10 @@ import ray.testing.Visibility;
  * Hidden camera cases: a view whose viewDir is not unit length and whose viewUp is not perpendicular
  * to it, at an off-center image point; random cameras against the conventions; and a fresh ray per call.
  */
-@Points(value = 1, task = StudentTask.CAMERA, visibility = Visibility.HIDDEN)
-public class Task1HiddenTest {
+@Points(value = 1, visibility = Visibility.HIDDEN)
+public class CameraRaysHiddenTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CAMERA);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     /**
      * viewDir (3,0,−4) has length 5, and viewUp (3,5,−4) = 5·(0,1,0) + viewDir is not perpendicular

@@ -21,7 +21,6 @@ import ray.surface.HitMessages;
 import ray.surface.Sphere;
 import ray.surface.Triangle;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 import ray.testing.Visibility;
 
@@ -30,10 +29,10 @@ import ray.testing.Visibility;
  * direction, a ray starting on the triangle (as shadow rays do), a record that already holds a
  * closer t, and a small triangle far from the origin.
  */
-@Points(value = 1, task = StudentTask.TRIANGLE, visibility = Visibility.HIDDEN)
-public class Task3HiddenTest {
+@Points(value = 1, visibility = Visibility.HIDDEN)
+public class TriangleHiddenTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.TRIANGLE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     /** (0,0,2), (4,0,2), (0,2,2) in the plane z = 2, normal +z: a point is (4β, 2γ, 2). */
     private final Triangle flat = new Triangle(v(0, 0, 2), v(4, 0, 2), v(0, 2, 2));

@@ -13,7 +13,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 
 /**
@@ -21,10 +20,10 @@ import ray.testing.StudentTaskRule;
  * the rims, where the side and a cap meet and either normal would be fair, and every miss is
  * paired with a nearby hit, so a cylinder that never hits fails too.
  */
-@Points(value = 1, task = StudentTask.CYLINDER, bonus = true)
-public class CylinderBonusTest {
+@Points(1)
+public class CylinderTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.CYLINDER);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static final double TOL = 1e-12;
     /** Radius 1, from y = 0 to y = 2 about the y-axis. */

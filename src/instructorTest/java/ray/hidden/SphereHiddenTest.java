@@ -19,7 +19,6 @@ import ray.math.Vec3;
 import ray.surface.HitMessages;
 import ray.surface.Sphere;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 import ray.testing.Visibility;
 
@@ -28,10 +27,10 @@ import ray.testing.Visibility;
  * an off-center hit from inside along a non-unit direction, a record that already holds a closer t,
  * and a tiny sphere far from the origin.
  */
-@Points(value = 1, task = StudentTask.SPHERE, visibility = Visibility.HIDDEN)
-public class Task2HiddenTest {
+@Points(value = 1, visibility = Visibility.HIDDEN)
+public class SphereHiddenTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.SPHERE);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private final Sphere unit = new Sphere(Vec3.ZERO, 1);
 

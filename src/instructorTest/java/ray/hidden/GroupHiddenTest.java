@@ -23,7 +23,6 @@ import ray.surface.FixedHitSurface;
 import ray.surface.Group;
 import ray.surface.Surface;
 import ray.testing.Points;
-import ray.testing.StudentTask;
 import ray.testing.StudentTaskRule;
 import ray.testing.Visibility;
 
@@ -32,10 +31,10 @@ import ray.testing.Visibility;
  * shuffled order, a hundred-way tie, deep nesting, children that compute t from the ray itself, and
  * a record that already holds a closer t.
  */
-@Points(value = 1, task = StudentTask.GROUP, visibility = Visibility.HIDDEN)
-public class Task4HiddenTest {
+@Points(value = 1, visibility = Visibility.HIDDEN)
+public class GroupHiddenTest {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(StudentTask.GROUP);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass());
 
     private static Ray downZ(double start, double end) {
         return new Ray(Vec3.ZERO, v(0, 0, -1), start, end);

@@ -1,0 +1,192 @@
+package ray.tools;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Optional;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import ray.assignment.Assignment;
+import ray.assignment.Task;
+
+/**
+ * The students' Markdown (README.md, docs/*.md) as the handout ships it for an assignment. The
+ * sources are written for the default preset ({@value Assignment#DEFAULT_PRESET}), whose numbers
+ * they use; for another assignment:
+ * <ul>
+ * <li>every task number ("Task 2", "Tasks 2 and 3", "TODO(Task 2)", "-Ptask=2") becomes the
+ * assignment's number of that task;</li>
+ * <li>a task's section, from a line {@code <!-- TASK id -->} to {@code <!-- END TASK -->}, ships
+ * only when the task is chosen, and a run of such sections (blank lines between them) is put in the
+ * assignment's order;</li>
+ * <li>a block from {@code <!-- IF TASK id, id… -->} (or {@code <!-- IF NOT TASK id, id… -->}) to
+ * {@code <!-- END IF -->} ships only when one of the tasks is (or none is) chosen, and so does a single line
+ * that ends with {@code <!-- task: id -->} (a table row, a list item), a run of such lines in the
+ * assignment's order;</li>
+ * <li>a number of a task the assignment leaves out, outside such a block, is an error naming the
+ * file and line: the docs would name a task that students do not have.</li>
+ * </ul>
+ * The markers are removed.
+ */
+public final class AssignmentDocs {
+    private static final Pattern SECTION = Pattern.compile("\\s*<!--\\s*TASK ([\\w-]+)\\s*-->\\s*");
+    private static final Pattern SECTION_END = Pattern.compile("\\s*<!--\\s*END TASK\\s*-->\\s*");
+    private static final Pattern IF = Pattern.compile("\\s*<!--\\s*IF (NOT )?TASK ([\\w-]+(?:\\s*,\\s*[\\w-]+)*)\\s*-->\\s*");
+    private static final Pattern IF_END = Pattern.compile("\\s*<!--\\s*END IF\\s*-->\\s*");
+    private static final Pattern LINE_TASK = Pattern.compile("\\s*<!--\\s*task: ([\\w-]+)\\s*-->\\s*$");
+    /** "Task 2", "Tasks 2 and 3", "Tasks 1, 2 or 4", "TODO(Task 2)", "-Ptask=2". */
+    private static final Pattern NUMBERS = Pattern.compile("\\b(Tasks? )(\\d+)((?:(?:, | and | or | to )\\d+\\b)*)|(-Ptask=)(\\d+)");
+    private static final Pattern NUMBER = Pattern.compile("\\d+");
+
+    private AssignmentDocs() {
+    }
+
+    /** {@code markdown} (the file {@code fileName}) as it ships for {@code assignment}. */
+    public static String compose(String markdown, String fileName, Assignment assignment) {
+        Composer composer = new Composer(fileName, Assignment.preset(Assignment.DEFAULT_PRESET), assignment);
+        return String.join("\n", composer.lines(List.of(markdown.split("\n", -1)), 0));
+    }
+
+    /** One file's composition; line numbers in errors count from 1. */
+    private record Composer(String fileName, Assignment canonical, Assignment assignment) {
+        /** {@code lines}, the first of which is line {@code offset} (from 0) of the file, composed. */
+        List<String> lines(List<String> lines, int offset) {
+            List<String> out = new ArrayList<>();
+            int n = 0;
+            while (n < lines.size()) {
+                String line = lines.get(n);
+                if (SECTION.matcher(line).matches()) {
+                    // A run of task sections: each kept or dropped, the kept ones in the assignment's order.
+                    List<Section> run = new ArrayList<>();
+                    while (n < lines.size() && (SECTION.matcher(lines.get(n)).matches() || (lines.get(n).isBlank() && nextIsSection(lines, n)))) {
+                        if (lines.get(n).isBlank()) {
+                            n++;
+                            continue;
+                        }
+                        Matcher m = SECTION.matcher(lines.get(n));
+                        m.matches();
+                        String id = known(m.group(1), offset + n);
+                        int begin = ++n;
+                        n = end(lines, n, SECTION, SECTION_END, offset + begin, "TASK " + id, "<!-- END TASK -->");
+                        run.add(new Section(id, offset + begin, lines.subList(begin, n)));
+                        n++;
+                    }
+                    run.stream().filter(sec -> assignment.isChosen(sec.id)).sorted(Comparator.comparingInt(sec -> assignment.number(sec.id)))
+                            .forEach(sec -> {
+                                out.addAll(lines(sec.lines, sec.firstLine));
+                                out.add("");
+                            });
+                    continue;
+                }
+                Matcher condition = IF.matcher(line);
+                if (condition.matches()) {
+                    boolean anyChosen = false;
+                    for (String id : condition.group(2).split("\\s*,\\s*")) {
+                        anyChosen |= assignment.isChosen(known(id, offset + n));
+                    }
+                    boolean keep = anyChosen != (condition.group(1) != null);
+                    int begin = ++n;
+                    n = end(lines, n, IF, IF_END, offset + begin, "IF TASK " + condition.group(2), "<!-- END IF -->");
+                    if (keep) {
+                        out.addAll(lines(lines.subList(begin, n), offset + begin));
+                    }
+                    n++;
+                    continue;
+                }
+                if (SECTION_END.matcher(line).matches() || IF_END.matcher(line).matches()) {
+                    throw new IllegalArgumentException(fileName + ":" + (offset + n + 1) + ": an END without its beginning");
+                }
+                if (LINE_TASK.matcher(line).find()) {
+                    // A run of lines that each end with a task's marker (table rows, list items): the
+                    // chosen tasks' lines, in the assignment's order.
+                    List<Section> run = new ArrayList<>();
+                    for (; n < lines.size(); n++) {
+                        Matcher lineTask = LINE_TASK.matcher(lines.get(n));
+                        if (!lineTask.find()) {
+                            break;
+                        }
+                        run.add(new Section(known(lineTask.group(1), offset + n), offset + n, List.of(lines.get(n).substring(0, lineTask.start()))));
+                    }
+                    run.stream().filter(l -> assignment.isChosen(l.id)).sorted(Comparator.comparingInt(l -> assignment.number(l.id)))
+                            .forEach(l -> out.add(renumber(l.lines.get(0), l.firstLine)));
+                    continue;
+                }
+                out.add(renumber(line, offset + n));
+                n++;
+            }
+            return out;
+        }
+
+        /** The index of the line that ends the block whose content begins at {@code n}, blocks of the same kind nested inside counted. */
+        private int end(List<String> lines, int n, Pattern begins, Pattern ends, int beganAt, String what, String endMarker) {
+            int depth = 0;
+            for (; n < lines.size(); n++) {
+                if (begins.matcher(lines.get(n)).matches()) {
+                    depth++;
+                } else if (ends.matcher(lines.get(n)).matches()) {
+                    if (depth == 0) {
+                        return n;
+                    }
+                    depth--;
+                }
+            }
+            throw new IllegalArgumentException(fileName + ":" + beganAt + ": " + what + " is never ended (" + endMarker + ")");
+        }
+
+        private String known(String id, int n) {
+            if (assignment.table().find(id).isEmpty()) {
+                throw new IllegalArgumentException(fileName + ":" + (n + 1) + ": there is no task \"" + id + "\" in the table of tasks");
+            }
+            return id;
+        }
+
+        /** The line with each task number of the default preset made the assignment's. */
+        private String renumber(String line, int n) {
+            Matcher m = NUMBERS.matcher(line);
+            StringBuilder out = new StringBuilder();
+            while (m.find()) {
+                String replaced;
+                if (m.group(4) != null) {
+                    replaced = m.group(4) + number(m.group(5), line, n);
+                } else {
+                    StringBuilder list = new StringBuilder(m.group(1)).append(number(m.group(2), line, n));
+                    Matcher rest = NUMBER.matcher(m.group(3));
+                    int at = 0;
+                    while (rest.find()) {
+                        list.append(m.group(3), at, rest.start()).append(number(rest.group(), line, n));
+                        at = rest.end();
+                    }
+                    replaced = list.toString();
+                }
+                m.appendReplacement(out, Matcher.quoteReplacement(replaced));
+            }
+            m.appendTail(out);
+            return out.toString();
+        }
+
+        private int number(String canonicalNumber, String line, int n) {
+            Optional<Task> task = canonical.task(Integer.parseInt(canonicalNumber));
+            if (task.isEmpty()) {
+                throw new IllegalArgumentException(fileName + ":" + (n + 1) + ": Task " + canonicalNumber + " is no task of the "
+                        + Assignment.DEFAULT_PRESET + " preset, whose numbers the docs use: " + line.strip());
+            }
+            int number = assignment.number(task.get().id());
+            if (number == 0) {
+                throw new IllegalArgumentException(fileName + ":" + (n + 1) + ": names Task " + canonicalNumber + " (" + task.get().id()
+                        + "), which this assignment leaves out; put it in an <!-- IF TASK " + task.get().id() + " --> block: " + line.strip());
+            }
+            return number;
+        }
+    }
+
+    private static boolean nextIsSection(List<String> lines, int n) {
+        int next = n;
+        while (next < lines.size() && lines.get(next).isBlank()) {
+            next++;
+        }
+        return next < lines.size() && SECTION.matcher(lines.get(next)).matches();
+    }
+
+    private record Section(String id, int firstLine, List<String> lines) {
+    }
+}
