@@ -69,6 +69,9 @@ public final class GradeAll implements Callable<Integer> {
     @Option(names = "--tasks", description = "The tasks of the assignment for this grade, by id, in order (overrides the assignment's).")
     String tasksGiven;
 
+    @Option(names = "--hints", description = "The hint level of the failure messages: goal, steps or formulas (overrides the assignment's).")
+    String hintsGiven;
+
     /** Where the log and progress lines go (the original stderr, as System.err is routed per grader). */
     PrintStream log;
 
@@ -99,7 +102,7 @@ public final class GradeAll implements Callable<Integer> {
             }
             // Every submission is graded as this assignment (the shared tree and each grader read it).
             ray.assignment.Assignment.use(ray.assignment.Assignment.resolve(project, assignmentGiven,
-                    tasksGiven == null ? Map.of() : Map.of("tasks", tasksGiven)));
+                    ray.assignment.Assignment.overrides(tasksGiven, hintsGiven)));
             all = ClassSubmission.in(submissions, out);
         } catch (IllegalArgumentException | ray.assignment.AssignmentException e) {
             log.println("error: " + e.getMessage());

@@ -68,6 +68,9 @@ public final class Grader implements Callable<Integer> {
     @Option(names = "--tasks", description = "The tasks of the assignment for this grade, by id, in order (overrides the assignment's).")
     String tasksGiven;
 
+    @Option(names = "--hints", description = "The hint level of the failure messages: goal, steps or formulas (overrides the assignment's).")
+    String hintsGiven;
+
     @Option(names = "--task", description = "Grade only this task's tests (a regrade of one task, or the diagnosis evaluation).")
     Integer onlyTask;
 
@@ -139,7 +142,7 @@ public final class Grader implements Callable<Integer> {
             // The assignment graded: the project's file (in a grading package, the one it was packed with), or the one given.
             if (sharedTree == null) {
                 ray.assignment.Assignment.use(ray.assignment.Assignment.resolve(project, assignmentGiven,
-                        tasksGiven == null ? Map.of() : Map.of("tasks", tasksGiven)));
+                        ray.assignment.Assignment.overrides(tasksGiven, hintsGiven)));
             }
             Files.createDirectories(out);
             work = Files.createTempDirectory(out, "work-");
@@ -300,11 +303,18 @@ public final class Grader implements Callable<Integer> {
         List<TestOutcome> outcomes = new ArrayList<>();
         for (Map.Entry<Integer, List<TestOutcome>> task : byTask.entrySet()) {
             outcomes.addAll(task.getValue());
-            if (judged.contains(task.getKey())) {
+            // A known mistake, named, is its fix: a task whose hints are at goal gets the tests' own messages only.
+            if (judged.contains(task.getKey()) && fixesShown(task.getKey())) {
                 nameMistakes(instructor, task.getKey(), task.getValue(), studentFiles, work.resolve("task-" + task.getKey()).resolve("mistakes"));
             }
         }
         return outcomes;
+    }
+
+    /** Whether task {@code number}'s feedback may name causes and fixes: its hint level is not goal. */
+    private static boolean fixesShown(int number) {
+        ray.assignment.Assignment assignment = ray.assignment.Assignment.current();
+        return assignment.task(number).map(t -> assignment.hints(t.id()) != ray.assignment.HintLevel.GOAL).orElse(true);
     }
 
     /** One task's compilation: its files copied to task-N, compiled against the handout into task-N/classes. */
@@ -358,6 +368,7 @@ public final class Grader implements Callable<Integer> {
             all = listed.get(null);
             if (all == null) {
                 all = sharedTree != null ? sharedTree.tests(null, () -> tests(tree).list(null)) : List.copyOf(tests(tree).list(null));
+                all = TaskPoints.shared(all, ray.assignment.Assignment.current());
                 listed.put(null, all);
             }
         }

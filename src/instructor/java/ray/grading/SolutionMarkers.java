@@ -16,12 +16,44 @@ public final class SolutionMarkers {
     private SolutionMarkers() {
     }
 
+    /** The first line of a TODO comment's hints for one level ("// HINTS steps"), and the line after the last level's. */
+    public static final String HINTS = "// HINTS ";
+    public static final String END_HINTS = "// END HINTS";
+
     /**
-     * The student's version of a file of task {@code number} in the assignment: {@link #studentVersion},
-     * with every {@code TODO(Task N)} comment numbered as the assignment numbers the task.
+     * The student's version of a file of task {@code number} in the assignment, whose hints are at
+     * {@code level}: {@link #studentVersion}, with every {@code TODO(Task N)} comment numbered as the
+     * assignment numbers the task, and of each TODO's hints only those of the level (every level
+     * keeps the lines before the first {@code // HINTS} marker: the goal and the conventions).
      */
-    public static String studentVersion(String source, String fileName, int number) {
-        return TODO.matcher(studentVersion(source, fileName)).replaceAll("// TODO(Task " + number + ")");
+    public static String studentVersion(String source, String fileName, int number, ray.assignment.HintLevel level) {
+        return TODO.matcher(hintsAt(studentVersion(source, fileName), level)).replaceAll("// TODO(Task " + number + ")");
+    }
+
+    /** {@code text} with each TODO's hints at {@code level} only, their markers gone. */
+    static String hintsAt(String text, ray.assignment.HintLevel level) {
+        StringBuilder out = new StringBuilder(text.length());
+        String[] lines = text.split("\n", -1);
+        String block = null;
+        for (int n = 0; n < lines.length; n++) {
+            String trimmed = lines[n].strip();
+            if (trimmed.startsWith(HINTS)) {
+                block = trimmed.substring(HINTS.length()).strip();
+                continue;
+            }
+            if (trimmed.equals(END_HINTS)) {
+                block = null;
+                continue;
+            }
+            if (block != null && !block.equals(level.id())) {
+                continue;
+            }
+            out.append(lines[n]);
+            if (n < lines.length - 1) {
+                out.append('\n');
+            }
+        }
+        return out.toString();
     }
 
     /**
@@ -59,7 +91,8 @@ public final class SolutionMarkers {
 
     /**
      * The student's version of a source file: solution blocks removed, stub lines uncommented
-     * (keeping their indentation).
+     * (keeping their indentation), each TODO's hints at every level still in their markers
+     * ({@link #studentVersion(String, String, int, ray.assignment.HintLevel)} picks one).
      *
      * @throws IllegalArgumentException for markers that do not pair up, naming the file and line
      */

@@ -50,13 +50,18 @@ public final class StudentFiles {
 
     /**
      * Relative path (with '/' separators) → task number, sorted by path: the files of every task the
-     * assignment chooses, as the table of tasks lists them. Each must hold a solution block
+     * assignment chooses, as the table of tasks lists them (none for a tree that holds none of them). Each must hold a solution block
      * ({@link SolutionMarkers}) and its task's {@code // TODO(Task N)} comment, or the tree is no
      * instructor's tree of this assignment.
      */
     public static Map<String, Integer> in(Path projectRoot) {
         Assignment assignment = Assignment.current();
         Map<String, Integer> files = new TreeMap<>();
+        // A tree without any of them (a test's small project of other classes) has no student files;
+        // one with only some of them is no tree of this assignment, and says which file it lacks.
+        if (assignment.tasks().stream().flatMap(t -> t.projectFiles().stream()).noneMatch(f -> Files.isRegularFile(projectRoot.resolve(f)))) {
+            return files;
+        }
         for (Task task : assignment.tasks()) {
             int number = assignment.number(task.id());
             for (String path : task.projectFiles()) {

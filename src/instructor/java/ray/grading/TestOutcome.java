@@ -22,6 +22,10 @@ public record TestOutcome(String id, String className, String method, int task, 
         return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, ran.passed, ran.message, ran.seconds);
     }
 
+    TestOutcome withPoints(double points) {
+        return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, passed, message, seconds);
+    }
+
     TestOutcome failedWith(String why) {
         return new TestOutcome(id, className, method, task, taskTitle, points, bonus, visibility, false, why, seconds);
     }

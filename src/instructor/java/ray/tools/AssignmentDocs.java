@@ -48,7 +48,17 @@ public final class AssignmentDocs {
     }
 
     /** One file's composition; line numbers in errors count from 1. */
-    private record Composer(String fileName, Assignment canonical, Assignment assignment) {
+    private static final class Composer {
+        private final String fileName;
+        private final Assignment canonical;
+        private final Assignment assignment;
+
+        Composer(String fileName, Assignment canonical, Assignment assignment) {
+            this.fileName = fileName;
+            this.canonical = canonical;
+            this.assignment = assignment;
+        }
+
         /** {@code lines}, the first of which is line {@code offset} (from 0) of the file, composed. */
         List<String> lines(List<String> lines, int offset) {
             List<String> out = new ArrayList<>();
@@ -187,6 +197,16 @@ public final class AssignmentDocs {
         return next < lines.size() && SECTION.matcher(lines.get(next)).matches();
     }
 
-    private record Section(String id, int firstLine, List<String> lines) {
+    /** A task's lines: a section, or a line with a task's marker, with where it began in the file (from 0). */
+    private static final class Section {
+        final String id;
+        final int firstLine;
+        final List<String> lines;
+
+        Section(String id, int firstLine, List<String> lines) {
+            this.id = id;
+            this.firstLine = firstLine;
+            this.lines = lines;
+        }
     }
 }

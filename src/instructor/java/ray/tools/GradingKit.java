@@ -91,6 +91,8 @@ public final class GradingKit {
                 given = args[i + 1];
             } else if (args[i].equals("--tasks")) {
                 overrides.put("tasks", args[i + 1]);
+            } else if (args[i].equals("--hints")) {
+                overrides.put("hints", args[i + 1]);
             }
         }
         try {

@@ -42,13 +42,14 @@ public final class Handout {
     private static final Pattern SECTION_END = Pattern.compile("\\s*(<!--|//)\\s*END INSTRUCTOR\\b.*");
     /** Text that must never reach a student. */
     private static final List<String> LEAKS = List.of("BEGIN SOLUTION", "END SOLUTION", "// STUB:", "BEGIN INSTRUCTOR",
-            "END INSTRUCTOR", "END TASK -->", "END IF -->", "<!-- task:");
+            "END INSTRUCTOR", "END TASK -->", "END IF -->", "<!-- task:",
+            SolutionMarkers.HINTS.strip(), SolutionMarkers.END_HINTS);
 
     private Handout() {
     }
 
     /**
-     * {@code Handout PROJECT [--assignment PRESET|FILE] [--tasks ID,ID,…]}: the handout of the
+     * {@code Handout PROJECT [--assignment PRESET|FILE] [--tasks ID,ID,…] [--hints LEVEL]}: the handout of the
      * project's assignment, or of the one given for this run (see {@link Assignment#resolve}).
      */
     public static void main(String[] args) throws IOException {
@@ -63,6 +64,11 @@ public final class Handout {
                 case "--tasks":
                     if (!args[i + 1].isBlank()) {
                         overrides.put("tasks", args[i + 1]);
+                    }
+                    break;
+                case "--hints":
+                    if (!args[i + 1].isBlank()) {
+                        overrides.put("hints", args[i + 1]);
                     }
                     break;
                 default:
@@ -83,7 +89,8 @@ public final class Handout {
         zip(folder, zip);
         System.out.println("handout: " + files.size() + " files in " + folder + " and " + zip);
         System.out.println("  " + assignment.tasks().size() + " tasks: " + String.join(", ", assignment.tasks().stream()
-                .map(t -> assignment.number(t.id()) + " " + t.id() + (assignment.isExtraCredit(t.id()) ? " (extra credit)" : ""))
+                .map(t -> assignment.number(t.id()) + " " + t.id() + (assignment.isExtraCredit(t.id()) ? " (extra credit)" : "")
+                        + ", hints: " + assignment.hints(t.id()).id())
                 .toArray(String[]::new)));
     }
 
@@ -139,7 +146,7 @@ public final class Handout {
     private static String javaVersion(String source, String relative, Assignment assignment) {
         return assignment.table().ofFile(relative)
                 .map(task -> assignment.isChosen(task.id())
-                        ? SolutionMarkers.studentVersion(source, relative, assignment.number(task.id()))
+                        ? SolutionMarkers.studentVersion(source, relative, assignment.number(task.id()), assignment.hints(task.id()))
                         : SolutionMarkers.solvedVersion(source, relative))
                 .orElseGet(() -> SolutionMarkers.studentVersion(source, relative));
     }

@@ -100,7 +100,7 @@ public class AssignmentTest {
                 "assignment.properties: there is no task \"spheres\"; the tasks are camera-rays, group, sphere, triangle, textures, cylinder");
         refused("tasks = sphere, sphere\n", Map.of(), "assignment.properties: the task sphere is chosen twice");
         refused("tasks = sphere\nhint = goal\n", Map.of(),
-                "assignment.properties: unknown key \"hint\"; expected preset, tasks, extraCredit, course");
+                "assignment.properties: unknown key \"hint\"; expected preset, tasks, extraCredit, hints, course, hints.ID or points.ID");
         refused("preset = course-2042\n", Map.of(),
                 "assignment.properties: preset = course-2042 is no preset; the presets are intersections, course-2017");
         refused("tasks = sphere\ncourse = 2019\n", Map.of(),
@@ -112,6 +112,20 @@ public class AssignmentTest {
         refused("preset = intersections\n", Map.of("tasks", "sphere,bvh"),
                 "assignment.properties with tasks given: there is no task \"bvh\"; the tasks are camera-rays, group, sphere, triangle,"
                         + " textures, cylinder");
+    }
+
+    @Test
+    public void hintLevelsForTheAssignmentAndForOneTask() {
+        Assignment a = read("tasks = sphere, triangle\nhints = steps\nhints.triangle = goal\n", Map.of());
+        assertEquals(HintLevel.STEPS, a.hints("sphere"));
+        assertEquals(HintLevel.GOAL, a.hints("triangle"));
+        assertEquals(a, read(a.toFileText(""), Map.of()));
+        assertEquals(HintLevel.FORMULAS, Assignment.preset("intersections").hints("sphere"));
+        assertEquals("the course's own TODOs said the goal alone", HintLevel.GOAL, Assignment.preset("course-2017").hints("sphere"));
+        assertEquals(HintLevel.GOAL, read("preset = intersections\n", Map.of("hints", "goal")).hints("group"));
+        refused("tasks = sphere\nhints = lots\n", Map.of(), "assignment.properties: hints = lots; expected goal, steps or formulas");
+        refused("tasks = sphere\nhints.spheres = goal\n", Map.of(), "assignment.properties: hints.spheres names no task; the tasks are"
+                + " camera-rays, group, sphere, triangle, textures, cylinder");
     }
 
     @Test

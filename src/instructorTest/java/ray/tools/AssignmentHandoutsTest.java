@@ -50,20 +50,25 @@ public class AssignmentHandoutsTest {
     private final String name;
     private final Assignment assignment;
 
-    public AssignmentHandoutsTest(String name, String given, String tasks) throws Exception {
+    public AssignmentHandoutsTest(String name, String given, String tasks, String hints) throws Exception {
         this.name = name;
-        this.assignment = Assignment.resolve(PROJECT, given, tasks == null ? Map.of() : Map.of("tasks", tasks));
+        this.assignment = Assignment.resolve(PROJECT, given, Assignment.overrides(tasks, hints));
     }
 
+    /** Every preset at every hint level, and assignments of a few tasks in orders of their own. */
     @Parameters(name = "{0}")
     public static List<Object[]> assignments() {
-        return List.of(
-                new Object[] {"intersections", "intersections", null},
-                new Object[] {"course-2017", "course-2017", null},
-                // Two tasks, in an order of their own: the group is Task 1, the sphere Task 2; the rest ships solved.
-                new Object[] {"group-then-sphere", "intersections", "group, sphere"},
-                // The extra credit chosen alone with a required task: Task 2 (Cylinder) stays extra credit.
-                new Object[] {"textures-and-cylinder", "intersections", "textures, cylinder"});
+        List<Object[]> all = new java.util.ArrayList<>();
+        for (String preset : Assignment.presetNames()) {
+            for (ray.assignment.HintLevel level : ray.assignment.HintLevel.values()) {
+                all.add(new Object[] {preset + "-" + level.id(), preset, null, level.id()});
+            }
+        }
+        // Two tasks, in an order of their own: the group is Task 1, the sphere Task 2; the rest ships solved.
+        all.add(new Object[] {"group-then-sphere", "intersections", "group, sphere", null});
+        // The extra credit chosen with one required task: Task 2 (Cylinder) stays extra credit.
+        all.add(new Object[] {"textures-and-cylinder", "intersections", "textures, cylinder", "steps"});
+        return all;
     }
 
     @Test(timeout = 600_000)
@@ -87,7 +92,8 @@ public class AssignmentHandoutsTest {
                     todos.add(m.group(1));
                 }
                 if (number > 0) {
-                    assertEquals(file + " is a stub", SolutionMarkers.studentVersion(source, file, number), text);
+                    assertEquals(file + " is a stub", SolutionMarkers.studentVersion(source, file, number, assignment.hints(task.id())), text);
+                    checkHints(file, source, text, assignment.hints(task.id()));
                     assertEquals(file + "'s TODO comments carry its task's number", Set.of(String.valueOf(number)), todos);
                 } else {
                     assertEquals(file + " ships solved", SolutionMarkers.solvedVersion(source, file), text);
@@ -130,6 +136,82 @@ public class AssignmentHandoutsTest {
         for (TestOutcome t : withSolution) {
             assertTrue(t.id() + " fails with the solution in place: " + t.message(), t.passed());
         }
+    }
+
+    /** Named methods, which the goal level leaves to the student (the course's own TODOs named none). */
+    private static final List<String> ALGORITHMS = List.of("Cramer", "Möller", "Trumbore", "discriminant", "quadratic formula", "Shirley");
+
+    /**
+     * A TODO at its level: every level keeps the goal and every convention line; the goal's own lines
+     * hold no formula (no '=' or '·', no named method); the steps are words, without formulas; the
+     * formulas are today's text.
+     */
+    private static void checkHints(String file, String source, String shipped, ray.assignment.HintLevel level) {
+        List<String> todo = todoComment(shipped);
+        List<String> sourceTodo = todoComment(source);
+        int conventions = indexOfConventions(sourceTodo);
+        assertTrue(file + "'s TODO has no conventions", conventions > 0);
+        int hintsAt = sourceTodo.stream().filter(l -> l.startsWith("HINTS ")).findFirst().map(sourceTodo::indexOf).orElse(-1);
+        assertTrue(file + "'s TODO has no hints", hintsAt > conventions);
+        for (String convention : sourceTodo.subList(conventions, hintsAt)) {
+            assertTrue(file + " at " + level.id() + " lacks the convention line: " + convention, todo.contains(convention));
+        }
+        List<String> goal = todo.subList(1, indexOfConventions(todo));
+        for (String line : goal) {
+            assertFalse(file + "'s goal states a formula: " + line, line.contains("=") || line.contains("·"));
+            for (String algorithm : ALGORITHMS) {
+                assertFalse(file + "'s goal names a method: " + line, line.contains(algorithm));
+            }
+        }
+        List<String> hints = todo.subList(todo.indexOf(sourceTodo.get(hintsAt - 1)) + 1, todo.size());
+        List<String> expected = block(sourceTodo, "HINTS " + level.id());
+        assertEquals(file + "'s hints at " + level.id(), expected, hints);
+        if (level == ray.assignment.HintLevel.STEPS) {
+            assertFalse(file + " at steps gives no steps", hints.isEmpty());
+            for (String line : hints) {
+                assertFalse(file + "'s steps state a formula: " + line, line.contains("=") || line.contains("·"));
+            }
+        }
+    }
+
+    /** The lines of the source TODO's hints block that begins with {@code marker} (none for the goal, which has no block). */
+    private static List<String> block(List<String> sourceTodo, String marker) {
+        int begin = sourceTodo.indexOf(marker);
+        if (begin < 0) {
+            return List.of();
+        }
+        int end = begin + 1;
+        while (end < sourceTodo.size() && !sourceTodo.get(end).startsWith("HINTS ") && !sourceTodo.get(end).equals("END HINTS")) {
+            end++;
+        }
+        return sourceTodo.subList(begin + 1, end);
+    }
+
+    /** The TODO comment's lines, without the comment's slashes and indentation. */
+    private static List<String> todoComment(String text) {
+        List<String> lines = new java.util.ArrayList<>();
+        boolean in = false;
+        for (String line : text.split("\n")) {
+            String t = line.strip();
+            if (t.startsWith("// TODO(Task")) {
+                in = true;
+            } else if (!t.startsWith("//") || t.equals(SolutionMarkers.BEGIN)) {
+                in = false;
+            }
+            if (in) {
+                lines.add(t.replaceFirst("^//\\s?", "").strip());
+            }
+        }
+        return lines;
+    }
+
+    private static int indexOfConventions(List<String> todo) {
+        for (int i = 0; i < todo.size(); i++) {
+            if (todo.get(i).startsWith("Conventions")) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /**

@@ -139,7 +139,7 @@ public class StudentLoopTest {
         assertTrue(again, again.contains("Nothing changed since the last gradle test; its summary again:"));
         assertEquals(again, closing.group(), closing(again).group());
         String wrong = gradle("test", "-Ptask=9");
-        assertTrue(wrong, wrong.contains("-Ptask=9: there is no such task; give a task number from 1 to 6"));
+        assertTrue(wrong, wrong.contains("-Ptask=9: there is no such task in this assignment; give a number or id of 1 (camera-rays), 2 (sphere)"));
     }
 
     /**

@@ -25,8 +25,8 @@ import java.util.TreeSet;
  * student's.
  *
  * <p>Written as an assignment file (properties): {@code preset = NAME} starts from a ready-made one
- * (ray/assignment/presets/NAME.properties), and {@code tasks}, {@code extraCredit}, {@code course}
- * say or override the rest. The build carries the project's assignment.properties into the
+ * (ray/assignment/presets/NAME.properties), and {@code tasks}, {@code extraCredit}, {@code hints}
+ * (and a task's own {@code hints.ID}) and {@code course} say or override the rest. The build carries the project's assignment.properties into the
  * classpath ({@link #RESOURCE}), where {@link #current()} reads it; without one, the assignment is
  * the preset {@value #DEFAULT_PRESET}.
  */
@@ -37,7 +37,11 @@ public final class Assignment {
     public static final String DEFAULT_PRESET = "intersections";
     /** The course conventions ray1 renders with. */
     public static final Set<String> COURSES = Set.of("2017");
-    private static final List<String> KEYS = List.of("preset", "tasks", "extraCredit", "course");
+    private static final List<String> KEYS = List.of("preset", "tasks", "extraCredit", "hints", "course");
+    /** A task's own hint level: {@code hints.ID = LEVEL}. */
+    private static final String TASK_HINTS = "hints.";
+    /** A task's points in this assignment: {@code points.ID = N}. */
+    private static final String TASK_POINTS = "points.";
     private static final String PRESETS = "ray/assignment/presets/";
 
     private static volatile Assignment current;
@@ -45,12 +49,21 @@ public final class Assignment {
     private final TaskTable table;
     private final List<Task> tasks;
     private final Set<String> extraCredit;
+    private final HintLevel hints;
+    /** The tasks whose hint level is not {@link #hints}. */
+    private final Map<String, HintLevel> taskHints;
+    /** The tasks whose points are not the table's. */
+    private final Map<String, Double> taskPoints;
     private final String course;
 
-    private Assignment(TaskTable table, List<Task> tasks, Set<String> extraCredit, String course) {
+    private Assignment(TaskTable table, List<Task> tasks, Set<String> extraCredit, HintLevel hints, Map<String, HintLevel> taskHints,
+            Map<String, Double> taskPoints, String course) {
         this.table = table;
         this.tasks = List.copyOf(tasks);
         this.extraCredit = Set.copyOf(extraCredit);
+        this.hints = hints;
+        this.taskHints = Map.copyOf(taskHints);
+        this.taskPoints = Map.copyOf(taskPoints);
         this.course = course;
     }
 
@@ -110,6 +123,18 @@ public final class Assignment {
         }
     }
 
+    /** The keys given for one run: {@code tasks} and {@code hints}, each when not null. */
+    public static Map<String, String> overrides(String tasks, String hints) {
+        Map<String, String> overrides = new java.util.LinkedHashMap<>();
+        if (tasks != null) {
+            overrides.put("tasks", tasks);
+        }
+        if (hints != null) {
+            overrides.put("hints", hints);
+        }
+        return overrides;
+    }
+
     /** Reads an assignment file; {@code name} is how errors name it. */
     static Assignment read(Reader reader, String name, TaskTable table, Map<String, String> overrides) throws UncheckedIOException {
         Properties file = new Properties();
@@ -119,8 +144,9 @@ public final class Assignment {
             throw new UncheckedIOException(e);
         }
         for (String key : file.stringPropertyNames()) {
-            if (!KEYS.contains(key)) {
-                throw new AssignmentException(name + ": unknown key \"" + key + "\"; expected " + String.join(", ", KEYS));
+            if (!KEYS.contains(key) && !key.startsWith(TASK_HINTS) && !key.startsWith(TASK_POINTS)) {
+                throw new AssignmentException(name + ": unknown key \"" + key + "\"; expected " + String.join(", ", KEYS)
+                        + ", hints.ID or points.ID");
             }
         }
         Properties p = new Properties();
@@ -140,7 +166,7 @@ public final class Assignment {
             p.setProperty(key, file.getProperty(key));
         }
         overrides.forEach(p::setProperty);
-        String where = overrides.isEmpty() ? name : name + " with " + overrides.keySet().iterator().next() + " given";
+        String where = overrides.isEmpty() ? name : name + " with " + String.join(" and ", overrides.keySet()) + " given";
 
         List<String> ids = TaskTable.list(p.getProperty("tasks"));
         if (ids.isEmpty()) {
@@ -180,11 +206,46 @@ public final class Assignment {
         if (extra.size() == tasks.size()) {
             throw new AssignmentException(where + ": every chosen task is extra credit; at least one must be required");
         }
+        HintLevel hints = level(p.getProperty("hints", HintLevel.FORMULAS.id()), where, "hints");
+        Map<String, HintLevel> taskHints = new java.util.TreeMap<>();
+        for (String key : p.stringPropertyNames()) {
+            if (key.startsWith(TASK_HINTS)) {
+                String id = key.substring(TASK_HINTS.length());
+                if (table.find(id).isEmpty()) {
+                    throw new AssignmentException(where + ": " + key + " names no task; the tasks are " + String.join(", ", idsOf(table)));
+                }
+                HintLevel level = level(p.getProperty(key), where, key);
+                if (level != hints && seen.contains(id)) {
+                    taskHints.put(id, level);
+                }
+            }
+        }
+        Map<String, Double> taskPoints = new java.util.TreeMap<>();
+        for (String key : p.stringPropertyNames()) {
+            if (key.startsWith(TASK_POINTS)) {
+                String id = key.substring(TASK_POINTS.length());
+                if (table.find(id).isEmpty()) {
+                    throw new AssignmentException(where + ": " + key + " names no task; the tasks are " + String.join(", ", idsOf(table)));
+                }
+                double points = TaskTable.positiveOrZero(p.getProperty(key), where + ": " + key);
+                if (points != table.get(id).points() && seen.contains(id)) {
+                    taskPoints.put(id, points);
+                }
+            }
+        }
         String course = p.getProperty("course", "2017").trim();
         if (!COURSES.contains(course)) {
             throw new AssignmentException(where + ": course = " + course + "; ray1 renders with the course's conventions of " + String.join(", ", new TreeSet<>(COURSES)));
         }
-        return new Assignment(table, tasks, extra, course);
+        return new Assignment(table, tasks, extra, hints, taskHints, taskPoints, course);
+    }
+
+    private static HintLevel level(String value, String where, String key) {
+        HintLevel level = HintLevel.of(value);
+        if (level == null) {
+            throw new AssignmentException(where + ": " + key + " = " + value.trim() + "; expected goal, steps or formulas");
+        }
+        return level;
     }
 
     private static List<String> idsOf(TaskTable table) {
@@ -214,6 +275,19 @@ public final class Assignment {
 
     public String course() {
         return course;
+    }
+
+    /**
+     * What task {@code id} is worth in this assignment: its regular tests' points together (an
+     * extra-credit task's, its bonus points), or 0 to keep its tests' own points.
+     */
+    public double points(String id) {
+        return taskPoints.getOrDefault(id, table.get(id).points());
+    }
+
+    /** How much the TODO comments and failure messages of task {@code id} say. */
+    public HintLevel hints(String id) {
+        return taskHints.getOrDefault(id, hints);
     }
 
     public boolean isChosen(String id) {
@@ -272,13 +346,17 @@ public final class Assignment {
         }
         out.append("tasks = ").append(String.join(", ", tasks.stream().map(Task::id).toArray(String[]::new))).append('\n');
         out.append("extraCredit = ").append(String.join(", ", extraCredit)).append('\n');
+        out.append("hints = ").append(hints.id()).append('\n');
+        taskHints.forEach((id, level) -> out.append("hints.").append(id).append(" = ").append(level.id()).append('\n'));
+        taskPoints.forEach((id, points) -> out.append("points.").append(id).append(" = ").append(points).append('\n'));
         out.append("course = ").append(course).append('\n');
         return out.toString();
     }
 
     @Override
     public boolean equals(Object o) {
-        return o instanceof Assignment a && a.tasks.equals(tasks) && a.extraCredit.equals(extraCredit) && a.course.equals(course);
+        return o instanceof Assignment a && a.tasks.equals(tasks) && a.extraCredit.equals(extraCredit) && a.hints == hints
+                && a.taskHints.equals(taskHints) && a.taskPoints.equals(taskPoints) && a.course.equals(course);
     }
 
     @Override

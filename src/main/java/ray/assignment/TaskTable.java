@@ -111,7 +111,8 @@ public final class TaskTable {
             if (!extra.equals("true") && !extra.equals("false")) {
                 throw new AssignmentException(name + ": " + id + ".extraCredit is \"" + extra + "\"; expected true or false");
             }
-            tasks.add(new Task(id, title, files, tests, list(p.getProperty(id + ".scenes")), Boolean.parseBoolean(extra), needs));
+            double points = positiveOrZero(p.getProperty(id + ".points", "0"), name + ": " + id + ".points");
+            tasks.add(new Task(id, title, files, tests, list(p.getProperty(id + ".scenes")), points, Boolean.parseBoolean(extra), needs));
         }
         for (String key : p.stringPropertyNames()) {
             String owner = key.contains(".") ? key.substring(0, key.indexOf('.')) : null;
@@ -120,6 +121,19 @@ public final class TaskTable {
             }
         }
         return new TaskTable(tasks);
+    }
+
+    /** A number of points: finite and not negative; {@code what} names the file and key in the error. */
+    static double positiveOrZero(String value, String what) {
+        try {
+            double x = Double.parseDouble(value.trim());
+            if (Double.isFinite(x) && x >= 0) {
+                return x;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new AssignmentException(what + " is \"" + value.trim() + "\"; expected a number of points, 0 or more");
     }
 
     private static String required(Properties p, String name, String key) {

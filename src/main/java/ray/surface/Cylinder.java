@@ -23,6 +23,21 @@ public class Cylinder extends CylinderSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         // TODO(Task 6): intersect the ray with this capped cylinder (extra credit).
+        //   Return whether the ray meets this capped cylinder, and on a hit fill out with the nearest hit: its
+        //   t, its location, the unit outward normal and this surface; on a miss leave out exactly as it was.
+        //   Conventions (the reference images depend on them):
+        //   - The hit counts only for ray.start < t < ray.end, both ends open, with t the ray's own
+        //     parameter (its direction is not unit length).
+        //   - The bottom cap's center is center, the cylinder rises along +y by height, and its radius is
+        //     radius; the caps' normals are −y (bottom) and +y (top), the side's points straight away from
+        //     the axis.
+        // HINTS steps
+        //   1) The side: the ray's points at the radius's distance from the axis give a quadratic in t that
+        //      uses only x and z; keep the roots whose point lies between the caps.
+        //   2) The caps: where the ray crosses each cap's plane, keep the point if it lies within the disc.
+        //   3) Of all the candidates keep the smallest t inside the ray's segment; none means a miss.
+        //   4) Fill the record with the outward normal of the part that was hit and return true.
+        // HINTS formulas
         //   Work with f = p − center, so that the bottom cap lies in y = 0 and the top in y = height.
         //   1) The side: (fx + t dx)² + (fz + t dz)² = radius² is a quadratic a t² + b t + c = 0 in x
         //      and z only: a = dx² + dz², b = 2 (fx dx + fz dz), c = fx² + fz² − radius². When a = 0
@@ -35,6 +50,7 @@ public class Cylinder extends CylinderSurface {
         //   4) Fill out.t, out.location = ray.pointAt(t), out.surface = this and the unit outward
         //      normal: (x − cx, 0, z − cz)/radius on the side, (0, −1, 0) on the bottom cap and
         //      (0, 1, 0) on the top; return true.
+        // END HINTS
         // BEGIN SOLUTION
         Vec3 f = ray.origin.minus(center);
         Vec3 d = ray.direction;

@@ -18,6 +18,22 @@ public class Sphere extends SphereSurface {
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
         // TODO(Task 2): intersect the ray with this sphere.
+        //   Return whether the ray meets the sphere, and on a hit fill out with the nearest hit: its t, its
+        //   location, the unit outward normal, this surface and its texture coordinates. On a miss leave out
+        //   exactly as it was.
+        //   Conventions (the reference images depend on them):
+        //   - The hit counts only for ray.start < t < ray.end, both ends open, with t the ray's own
+        //     parameter (its direction is not unit length).
+        //   - The texture coordinates come from the unit normal (x, y, z), y toward the north pole:
+        //     out.texU = ½ + atan2(x, z)/(2π) (0 to 1 around the pole) and out.texV = ½ + asin(y)/π
+        //     (0 at the south pole, 1 at the north).
+        // HINTS steps
+        //   1) Write the points of the ray into the sphere's equation: it becomes a quadratic equation in t.
+        //   2) When it has no real roots the ray misses.
+        //   3) Of its roots, take the smallest one inside the ray's open segment; none means a miss.
+        //   4) On a hit fill the record (t, the point, the unit outward normal, this) and return true.
+        //   5) Fill the texture coordinates from the unit normal, as the conventions say.
+        // HINTS formulas
         //   1) Put r(t) = p + t·d into |x − center|² = radius² and expand: a t² + b t + c = 0 with
         //      a = d·d, b = 2 d·(p − center), c = (p − center)·(p − center) − radius².
         //   2) A negative discriminant b² − 4ac means the ray misses.
@@ -27,6 +43,7 @@ public class Sphere extends SphereSurface {
         //   5) Also fill the texture coordinates from (x, y, z) = out.normal (unit length, y toward
         //      the north pole): out.texU = ½ + atan2(x, z)/(2π) (the longitude, 0 to 1 around the
         //      pole) and out.texV = ½ + asin(y)/π (the latitude, 0 at the south pole, 1 at the north).
+        // END HINTS
         // BEGIN SOLUTION
         // The textbook discriminant b² − 4ac cancels catastrophically for small or far spheres.
         // Ray Tracing Gems ch. 7 computes it from the ray's closest-approach vector instead:

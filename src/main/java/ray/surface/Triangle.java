@@ -26,8 +26,27 @@ public class Triangle extends TriangleSurface {
 
     @Override
     public boolean intersect(IntersectionRecord out, Ray ray) {
-        // TODO(Task 3): intersect the ray with this triangle (any correct method earns the points; the
-        //   lecture's is Cramer's rule, as below).
+        // TODO(Task 3): intersect the ray with this triangle.
+        //   Return whether the ray meets the triangle, and on a hit fill out: its t, its location, the normal
+        //   from normalAt, this surface, out.beta and out.gamma, and the texture coordinates. On a miss leave
+        //   out exactly as it was. Any correct method earns the points.
+        //   Conventions (the reference images depend on them):
+        //   - The hit counts only for ray.start < t < ray.end, both ends open, with t the ray's own
+        //     parameter (its direction is not unit length).
+        //   - beta is the weight of v1 and gamma the weight of v2 (v0 gets the rest); the triangle's edges
+        //     and corners belong to it, and a ray in its plane or parallel to it misses.
+        //   - The texture coordinates are vt0, vt1 and vt2 blended with those weights: out.texU is the
+        //     blend's x and out.texV its y.
+        // HINTS steps
+        //   1) Write a point of the triangle with two barycentric weights and set it equal to a point of the
+        //      ray: three equations (one per axis) in three unknowns.
+        //   2) Solve them (the lecture's way is Cramer's rule); when they have no single solution the ray is
+        //      parallel to the triangle and misses.
+        //   3) Check that the point lies inside the triangle and t inside the ray's segment.
+        //   4) On a hit fill the record as above and return true.
+        //   5) Blend the vertices' texture coordinates with the weights you found.
+        // HINTS formulas
+        //   The lecture's method is Cramer's rule, as below.
         //   1) A point of the triangle is v0 + beta·(v1 − v0) + gamma·(v2 − v0). Setting it equal to
         //      p + t·d gives a 3×3 linear system in (beta, gamma, t):
         //        beta·(v0 − v1) + gamma·(v0 − v2) + t·d = v0 − p
@@ -38,6 +57,7 @@ public class Triangle extends TriangleSurface {
         //      out.beta and out.gamma, then return true. On a miss, return false and leave out alone.
         //   5) Also fill the texture coordinates, blended like the location: with
         //      vt = (1 − beta − gamma)·vt0 + beta·vt1 + gamma·vt2, out.texU = vt.x and out.texV = vt.y.
+        // END HINTS
         // BEGIN SOLUTION
         // Not Cramer's rule but the watertight test of Woop, Benthin and Wald, "Watertight
         // Ray/Triangle Intersection", JCGT 2(1), 2013: a ray aimed exactly at an edge or vertex

@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.function.IntUnaryOperator;
 import ray.image.Image;
 import ray.math.Vec3;
+import ray.testing.Hints;
 
 /**
  * What the lookup tests share: small images whose every texel has its own color, and a check that
@@ -132,7 +133,17 @@ final class TextureLookups {
         fail(call(texture, width, height, u, v) + " must return texel " + expected + " (column, row from the top), but returned "
                 + (actual == null ? "the color " + got + ", which is no texel of the image"
                         : "texel (" + actual[0] + ", " + actual[1] + ")")
-                + "; " + rule);
+                + "; " + Hints.wordsOrFormula(inWords(rule), rule));
+    }
+
+    /**
+     * A lookup's rule as the levels below {@code formulas} state it ({@link Hints}): the convention in
+     * words, as the TODO states it at every level, without the formula or a worked case. The rules
+     * name their edge handling ("wrapped", "clamped", "clamps"); anything after them is a worked case.
+     */
+    static String inWords(String rule) {
+        return "the texel is the nearest one: column u·W and row (1 − v)·H counted from the top, each rounded to the nearest"
+                + " whole number (halves up), then " + (rule.contains("clamp") ? "clamped to the image" : "wrapped into the image");
     }
 
     private static String call(Texture texture, int width, int height, double u, double v) {

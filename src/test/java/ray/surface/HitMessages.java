@@ -43,9 +43,12 @@ public final class HitMessages {
         return "your intersect returned true with " + values(out, barycentrics);
     }
 
-    /** "what: expected E; R", then "; hint" when the numbers name a likely cause (hint may be null). */
+    /**
+     * "what: expected E; R", then "; hint" when the numbers name a likely cause (hint may be null) and
+     * the task's hint level shows causes ({@link ray.testing.Hints}: not at goal).
+     */
     public static String line(String what, String expected, String returned, String hint) {
-        return what + ": expected " + expected + "; " + returned + (hint == null ? "" : "; " + hint);
+        return what + ": expected " + expected + "; " + returned + (hint == null || !ray.testing.Hints.fixesShown() ? "" : "; " + hint);
     }
 
     private static String values(IntersectionRecord out, boolean barycentrics) {

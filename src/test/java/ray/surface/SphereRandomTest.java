@@ -14,6 +14,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.testing.Hints;
 import ray.testing.Points;
 import ray.testing.StudentTaskRule;
 
@@ -65,7 +66,8 @@ public class SphereRandomTest {
                     1e-9 * (radius + origin.minus(center).length()));
             Vec3 expectedNormal = out.location.minus(center).times(1 / radius);
             assertEquals(what + ": the normal must be unit length", 1, out.normal.length(), ON_SPHERE);
-            assertEquals(what + ": the normal must be (location − center)/radius, it was " + out.normal, 0,
+            assertEquals(what + ": the normal must be " + Hints.wordsOrFormula("the unit outward normal", "(location − center)/radius")
+                    + ", it was " + out.normal, 0,
                     out.normal.minus(expectedNormal).length(), ON_SPHERE);
         }
     }

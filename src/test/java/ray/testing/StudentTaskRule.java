@@ -57,6 +57,7 @@ public final class StudentTaskRule implements TestRule {
             @Override
             public void evaluate() throws Throwable {
                 UnfinishedTasks.entered(description.getClassName() + "#" + description.getMethodName());
+                Hints.running(task);
                 String skipped = UnfinishedTasks.skipped(task, bonus);
                 if (skipped != null) {
                     throw new AssertionError(skipped);
