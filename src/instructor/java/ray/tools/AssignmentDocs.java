@@ -7,6 +7,7 @@ import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import ray.assignment.Assignment;
+import ray.assignment.HintLevel;
 import ray.assignment.Task;
 
 /**
@@ -23,6 +24,8 @@ import ray.assignment.Task;
  * {@code <!-- END IF -->} ships only when one of the tasks is (or none is) chosen, and so does a single line
  * that ends with {@code <!-- task: id -->} (a table row, a list item), a run of such lines in the
  * assignment's order;</li>
+ * <li>inside a task's section, a block from {@code <!-- IF HINTS goal, steps -->} to
+ * {@code <!-- END IF -->} ships only when the task's hint level is one of those named;</li>
  * <li>a number of a task the assignment leaves out, outside such a block, is an error naming the
  * file and line: the docs would name a task that students do not have.</li>
  * </ul>
@@ -33,6 +36,8 @@ public final class AssignmentDocs {
     private static final Pattern SECTION_END = Pattern.compile("\\s*<!--\\s*END TASK\\s*-->\\s*");
     private static final Pattern IF = Pattern.compile("\\s*<!--\\s*IF (NOT )?TASK ([\\w-]+(?:\\s*,\\s*[\\w-]+)*)\\s*-->\\s*");
     private static final Pattern IF_END = Pattern.compile("\\s*<!--\\s*END IF\\s*-->\\s*");
+    /** Inside a task's section: a block for some of the hint levels ({@code <!-- IF HINTS goal, steps -->}). */
+    private static final Pattern IF_HINTS = Pattern.compile("\\s*<!--\\s*IF HINTS ([a-z]+(?:\\s*,\\s*[a-z]+)*)\\s*-->\\s*");
     private static final Pattern LINE_TASK = Pattern.compile("\\s*<!--\\s*task: ([\\w-]+)\\s*-->\\s*$");
     /** "Task 2", "Tasks 2 and 3", "Tasks 1, 2 or 4", "TODO(Task 2)", "-Ptask=2". */
     private static final Pattern NUMBERS = Pattern.compile("\\b(Tasks? )(\\d+)((?:(?:, | and | or | to )\\d+\\b)*)|(-Ptask=)(\\d+)");
@@ -44,7 +49,7 @@ public final class AssignmentDocs {
     /** {@code markdown} (the file {@code fileName}) as it ships for {@code assignment}. */
     public static String compose(String markdown, String fileName, Assignment assignment) {
         Composer composer = new Composer(fileName, Assignment.preset(Assignment.DEFAULT_PRESET), assignment);
-        return String.join("\n", composer.lines(List.of(markdown.split("\n", -1)), 0));
+        return String.join("\n", composer.lines(List.of(markdown.split("\n", -1)), 0, null));
     }
 
     /** One file's composition; line numbers in errors count from 1. */
@@ -59,8 +64,11 @@ public final class AssignmentDocs {
             this.assignment = assignment;
         }
 
-        /** {@code lines}, the first of which is line {@code offset} (from 0) of the file, composed. */
-        List<String> lines(List<String> lines, int offset) {
+        /**
+         * {@code lines}, the first of which is line {@code offset} (from 0) of the file, composed;
+         * {@code section} is the task whose section they are in, or null.
+         */
+        List<String> lines(List<String> lines, int offset, String section) {
             List<String> out = new ArrayList<>();
             int n = 0;
             while (n < lines.size()) {
@@ -83,9 +91,31 @@ public final class AssignmentDocs {
                     }
                     run.stream().filter(sec -> assignment.isChosen(sec.id)).sorted(Comparator.comparingInt(sec -> assignment.number(sec.id)))
                             .forEach(sec -> {
-                                out.addAll(lines(sec.lines, sec.firstLine));
+                                out.addAll(lines(sec.lines, sec.firstLine, sec.id));
                                 out.add("");
                             });
+                    continue;
+                }
+                Matcher levels = IF_HINTS.matcher(line);
+                if (levels.matches()) {
+                    if (section == null) {
+                        throw new IllegalArgumentException(fileName + ":" + (offset + n + 1) + ": IF HINTS outside a task's section");
+                    }
+                    boolean keep = false;
+                    for (String id : levels.group(1).split("\\s*,\\s*")) {
+                        HintLevel level = HintLevel.of(id);
+                        if (level == null) {
+                            throw new IllegalArgumentException(fileName + ":" + (offset + n + 1) + ": no hint level \"" + id
+                                    + "\"; expected goal, steps or formulas");
+                        }
+                        keep |= assignment.hints(section) == level;
+                    }
+                    int begin = ++n;
+                    n = end(lines, n, IF_HINTS, IF_END, offset + begin, "IF HINTS " + levels.group(1), "<!-- END IF -->");
+                    if (keep) {
+                        out.addAll(lines(lines.subList(begin, n), offset + begin, section));
+                    }
+                    n++;
                     continue;
                 }
                 Matcher condition = IF.matcher(line);
@@ -98,7 +128,7 @@ public final class AssignmentDocs {
                     int begin = ++n;
                     n = end(lines, n, IF, IF_END, offset + begin, "IF TASK " + condition.group(2), "<!-- END IF -->");
                     if (keep) {
-                        out.addAll(lines(lines.subList(begin, n), offset + begin));
+                        out.addAll(lines(lines.subList(begin, n), offset + begin, section));
                     }
                     n++;
                     continue;
@@ -131,7 +161,9 @@ public final class AssignmentDocs {
         private int end(List<String> lines, int n, Pattern begins, Pattern ends, int beganAt, String what, String endMarker) {
             int depth = 0;
             for (; n < lines.size(); n++) {
-                if (begins.matcher(lines.get(n)).matches()) {
+                // Both kinds of IF end with END IF, so either opens a level.
+                if (begins.matcher(lines.get(n)).matches() || (ends == IF_END && (IF.matcher(lines.get(n)).matches()
+                        || IF_HINTS.matcher(lines.get(n)).matches()))) {
                     depth++;
                 } else if (ends.matcher(lines.get(n)).matches()) {
                     if (depth == 0) {

@@ -248,6 +248,14 @@ public class AssignmentHandoutsTest {
                 .filter(line -> line.startsWith("## Task ")).map(line -> line.replaceAll("^(## Task \\d+).*", "$1"))
                 .collect(Collectors.toList());
         assertEquals("docs/assignment.md's task sections", expectedHeadings, headings);
+        // docs/assignment.md gives the math its level includes: the sphere's roots only at formulas,
+        // its texture coordinates (a convention) at every level.
+        if (assignment.isChosen("sphere")) {
+            String doc = Files.readString(handout.resolve("docs/assignment.md"), StandardCharsets.UTF_8);
+            assertEquals("the sphere's roots in docs/assignment.md at " + assignment.hints("sphere").id(),
+                    assignment.hints("sphere") == ray.assignment.HintLevel.FORMULAS, doc.contains("t = (−b ± √Δ)/(2a)"));
+            assertTrue(doc.contains("u = ½ + atan2(x, z)/(2π),    v = ½ + asin(y)/π"));
+        }
         long readmeRows = Files.readAllLines(handout.resolve("README.md"), StandardCharsets.UTF_8).stream()
                 .filter(line -> line.startsWith("| Task ")).count();
         assertEquals("README.md's table of tasks", assignment.tasks().size(), readmeRows);
