@@ -19,6 +19,7 @@ import org.junit.Test;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
+import ray.testing.Hints;
 import ray.testing.Points;
 import ray.testing.StudentTaskRule;
 
@@ -78,9 +79,9 @@ public class SphereHardCasesBonusTest {
         }
         if (!wrong.isEmpty()) {
             fail("far sphere: rays grazing the silhouette of a unit sphere 1e7 away are misclassified (" + wrong.size() + " of "
-                    + rays + " hit/miss wrong; e.g. " + wrong.get(0) + "): b² − 4ac cancels catastrophically when b² and 4ac"
+                    + rays + " hit/miss wrong; e.g. " + wrong.get(0) + ")" + Hints.fix(": b² − 4ac cancels catastrophically when b² and 4ac"
                     + " are both about 4e28; compute the discriminant from the closest-approach vector"
-                    + " (Ray Tracing Gems ch. 7, docs/numerics.md)");
+                    + " (Ray Tracing Gems ch. 7, docs/numerics.md)"));
         }
     }
 
@@ -105,9 +106,9 @@ public class SphereHardCasesBonusTest {
         if (errors.count > 0) {
             fail(String.format(Locale.ROOT, "huge sphere: for rays starting within about a unit of a sphere of radius 1e5…1e6,"
                     + " %d of %d near roots were off by more than %.0e relative (worst: %s)."
-                    + " In (−b − √Δ)/2a, −b and √Δ are both about 2R and nearly cancel; take the near root as c/q with"
+                    + Hints.fix(" In (−b − √Δ)/2a, −b and √Δ are both about 2R and nearly cancel; take the near root as c/q with"
                     + " q = −(b + sign(b)·√Δ)/2, which never subtracts (the stable quadratic, Numerical Recipes §5.6;"
-                    + " Ray Tracing Gems ch. 7)", errors.count, rays, ROOT_TOLERANCE, errors.worst));
+                    + " Ray Tracing Gems ch. 7)"), errors.count, rays, ROOT_TOLERANCE, errors.worst));
         }
     }
 
@@ -139,14 +140,14 @@ public class SphereHardCasesBonusTest {
         }
         if (deep.count > 0) {
             fail("ray from inside: " + deep.count + " of " + perKind + " rays from deep inside a sphere did not hit the far root"
-                    + " (e.g. " + deep.worst + "). From inside, the near root is negative (behind the origin):"
-                    + " take the smallest root with start < t < end, which is the far one");
+                    + " (e.g. " + deep.worst + ")." + Hints.fix(" From inside, the near root is negative (behind the origin):"
+                    + " take the smallest root with start < t < end, which is the far one"));
         }
         if (shallow.count > 0) {
             fail(String.format(Locale.ROOT, "ray from inside: %d of %d rays starting just inside a sphere of radius 1e5…1e6 and"
-                    + " heading out got the far root wrong by more than %.0e relative (worst: %s): in (−b + √Δ)/2a with b > 0,"
+                    + " heading out got the far root wrong by more than %.0e relative (worst: %s)" + Hints.fix(": in (−b + √Δ)/2a with b > 0,"
                     + " −b and √Δ nearly cancel; take that root as c/q with q = −(b + sign(b)·√Δ)/2 (the stable quadratic,"
-                    + " Numerical Recipes §5.6; Ray Tracing Gems ch. 7)", shallow.count, perKind, ROOT_TOLERANCE, shallow.worst));
+                    + " Numerical Recipes §5.6; Ray Tracing Gems ch. 7)"), shallow.count, perKind, ROOT_TOLERANCE, shallow.worst));
         }
     }
 
@@ -298,7 +299,7 @@ public class SphereHardCasesBonusTest {
         IntersectionRecord out = new IntersectionRecord();
         if (!sphere.intersect(out, ray)) {
             problems.add("exactly tangent rays missed", ray + " touches " + sphere + " at exactly one point, " + touch
-                    + " (b² − 4ac = 0 exactly), but missed: a discriminant of exactly 0 is a hit");
+                    + Hints.fix(" (b² − 4ac = 0 exactly)") + ", but missed" + Hints.fix(": a discriminant of exactly 0 is a hit"));
         } else if (!sound(out) || Math.abs(out.t - t) > 1e-12 * t
                 || out.location.minus(touch).length() > 1e-12 * (1 + touch.maxAbs()) || out.normal.minus(normal).length() > 1e-12) {
             problems.add("exactly tangent rays hit the wrong point", ray + " touches " + sphere + " at " + touch + " (t = " + t
@@ -318,8 +319,8 @@ public class SphereHardCasesBonusTest {
                     + ", normal " + out.normal);
         } else if (!inside && hit) {
             problems.add("rays one ulp outside hit", ray + " passes one ulp outside " + sphere + " but was reported as a hit at t = "
-                    + out.t + ": (p − c)·(p − c) and b² round the ulp away, so b² − 4ac comes out 0; compute the discriminant as"
-                    + " r² − l·l from the closest-approach vector l (Ray Tracing Gems ch. 7, docs/numerics.md)");
+                    + out.t + Hints.fix(": (p − c)·(p − c) and b² round the ulp away, so b² − 4ac comes out 0; compute the discriminant as"
+                    + " r² − l·l from the closest-approach vector l (Ray Tracing Gems ch. 7, docs/numerics.md)"));
         } else if (!inside && !untouched(before, out)) {
             problems.add("misses changed the record", ray + " misses " + sphere + " but the record was changed");
         }
@@ -334,8 +335,8 @@ public class SphereHardCasesBonusTest {
             double offSphere = Math.abs(out.location == null ? Double.NaN : out.location.minus(sphere.getCenter()).length() - r);
             if (!sound(out) || !(out.t > 0) || !(offSphere <= 1e-9 * (r + sphere.getCenter().maxAbs()))) {
                 problems.add("near-tangent hits were not clean", what + ", hit at t = " + out.t + ", location " + out.location
-                        + ", normal " + out.normal + ": a hit needs a finite t > 0, a point on the sphere and a unit normal (no NaN:"
-                        + " check the discriminant before its square root, and test start < t < end, which NaN fails)");
+                        + ", normal " + out.normal + ": a hit needs a finite t > 0, a point on the sphere and a unit normal"
+                        + Hints.fix(" (no NaN: check the discriminant before its square root, and test start < t < end, which NaN fails)"));
             }
         } else if (!untouched(before, out)) {
             problems.add("misses changed the record", what + ", missed but changed the record (t = " + out.t + ")");

@@ -48,7 +48,7 @@ public class SphereTest {
         String ray = "the ray from (0,0,5) toward −z";
         assertHitAt(ray + " at the unit sphere, which it enters at the nearer root", unit, out, new Ray(v(0, 0, 5), v(0, 0, -1)), 4, TOL);
         assertVec(ray + ": location", v(0, 0, 1), out.location, TOL);
-        assertVec(ray + ": normal (location − center)/radius", v(0, 0, 1), out.normal, TOL);
+        assertVec(ray + ": normal " + Hints.wordsOrFormula("the unit outward normal", "(location − center)/radius"), v(0, 0, 1), out.normal, TOL);
         assertSame(ray + ": out.surface must be the sphere", unit, out.surface);
     }
 
@@ -60,7 +60,8 @@ public class SphereTest {
         assertHitAt(ray + " at the unit sphere, from inside (the roots are −1 and 1; only t = 1 is in (0, ∞))", unit, out,
                 new Ray(Vec3.ZERO, v(0, 0, -1)), 1, TOL);
         assertVec(ray + ": location", v(0, 0, -1), out.location, TOL);
-        assertVec(ray + ": the normal points outward, (location − center)/radius, even from inside", v(0, 0, -1), out.normal, TOL);
+        assertVec(ray + ": the normal points outward" + Hints.fix(", (location − center)/radius,") + " even from inside",
+                v(0, 0, -1), out.normal, TOL);
     }
 
     @Test
@@ -74,7 +75,8 @@ public class SphereTest {
         assertHitAt(ray + " at the sphere of center (1.6,2.8,10), radius 2 (t = 7 − √3)", sphere, out, new Ray(v(1, 2, 3), v(0, 0, 1)),
                 7 - root3, TOL);
         assertVec(ray + ": location", v(1, 2, 10 - root3), out.location, TOL);
-        assertVec(ray + ": normal (location − center)/radius", v(-0.3, -0.4, -root3 / 2), out.normal, TOL);
+        assertVec(ray + ": normal " + Hints.wordsOrFormula("the unit outward normal", "(location − center)/radius"),
+                v(-0.3, -0.4, -root3 / 2), out.normal, TOL);
         assertSame(ray + ": out.surface must be the sphere", sphere, out.surface);
     }
 

@@ -18,6 +18,7 @@ import ray.Ray;
 import ray.math.Vec3;
 import ray.AnswerRounds;
 import ray.scene.ObjReader;
+import ray.testing.Hints;
 import ray.testing.Points;
 import ray.testing.ProjectFolder;
 import ray.testing.StudentTaskRule;
@@ -102,10 +103,10 @@ public class TriangleHardCasesBonusTest {
         if (through > 0) {
             fail("closed mesh: " + through + " of " + rays + " rays aimed exactly at edges and vertices shared by the 320 triangles"
                     + " of a closed mesh (an icosphere, seen from inside) passed between the triangles, hitting none at the point"
-                    + " aimed at (e.g. " + example + "). With Cramer's rule each triangle rounds its own β and γ, so two"
+                    + " aimed at (e.g. " + example + ")." + Hints.fix(" With Cramer's rule each triangle rounds its own β and γ, so two"
                     + " neighbors can both find a point of their shared edge a hair outside; a watertight test decides a shared"
                     + " edge the same way for both (Woop, Benthin and Wald, \"Watertight Ray/Triangle Intersection\", JCGT 2(1),"
-                    + " 2013; docs/numerics.md)");
+                    + " 2013; docs/numerics.md)"));
         }
     }
 
@@ -175,9 +176,9 @@ public class TriangleHardCasesBonusTest {
         }
         if (wrong > 0) {
             fail("tiny triangle: " + wrong + " of " + rays + " rays aimed well inside triangles of size 1e-6…1e-4, from 0.5 to 2"
-                    + " sizes away, missed or hit the wrong point (e.g. " + example + "). The determinant scales with the"
+                    + " sizes away, missed or hit the wrong point (e.g. " + example + ")." + Hints.fix(" The determinant scales with the"
                     + " triangle's area times |d| (about 1e-18 here): an absolute epsilon such as |det| < 1e-8, or a minimum t"
-                    + " other than ray.start, throws small triangles away; test det == 0 only (docs/numerics.md)");
+                    + " other than ray.start, throws small triangles away; test det == 0 only (docs/numerics.md)"));
         }
     }
 
@@ -233,9 +234,9 @@ public class TriangleHardCasesBonusTest {
         }
         if (!wrong.isEmpty()) {
             fail("degenerate triangle: " + wrong.size() + " of " + rays + " rays at triangles without area (collinear or repeated"
-                    + " vertices) were reported as hits (e.g. " + wrong.get(0) + "). Such a triangle has no inside, but the"
+                    + " vertices) were reported as hits (e.g. " + wrong.get(0) + "). Such a triangle has no inside" + Hints.fix(", but the"
                     + " rounded determinant of its system need not be exactly 0; reject it up front: its edge cross product"
-                    + " (v1 − v0) × (v2 − v0) is exactly zero, so getFaceNormal() is the zero vector (docs/numerics.md)");
+                    + " (v1 − v0) × (v2 − v0) is exactly zero, so getFaceNormal() is the zero vector (docs/numerics.md)") + ".");
         }
     }
 
@@ -288,10 +289,10 @@ public class TriangleHardCasesBonusTest {
         }
         if (!wrong.isEmpty()) {
             fail("ray in the plane: " + wrong.size() + " of " + rays + " rays lying exactly in a triangle's plane (integer geometry)"
-                    + " and crossing its interior were reported as hits (e.g. " + wrong.get(0) + "). The system's determinant"
+                    + " and crossing its interior were reported as hits (e.g. " + wrong.get(0) + ")." + Hints.fix(" The system's determinant"
                     + " is 0 in exact arithmetic, but with coordinates up to 2^20 it rounds to a small nonzero number, and the"
                     + " rounded β and γ can land inside; a robust test decides whether d is parallel to the plane without that"
-                    + " rounding (docs/numerics.md, \"Rays parallel to the plane\")");
+                    + " rounding (docs/numerics.md, \"Rays parallel to the plane\")"));
         }
     }
 
