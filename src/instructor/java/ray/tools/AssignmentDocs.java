@@ -26,6 +26,8 @@ import ray.assignment.Task;
  * assignment's order;</li>
  * <li>inside a task's section, a block from {@code <!-- IF HINTS goal, steps -->} to
  * {@code <!-- END IF -->} ships only when the task's hint level is one of those named;</li>
+ * <li>a block from {@code <!-- TABLE scenes -->} to {@code <!-- END TABLE -->} is replaced by the
+ * table the composer writes from the table of tasks (the chosen tasks' graded scenes);</li>
  * <li>a number of a task the assignment leaves out, outside such a block, is an error naming the
  * file and line: the docs would name a task that students do not have.</li>
  * </ul>
@@ -36,6 +38,9 @@ public final class AssignmentDocs {
     private static final Pattern SECTION_END = Pattern.compile("\\s*<!--\\s*END TASK\\s*-->\\s*");
     private static final Pattern IF = Pattern.compile("\\s*<!--\\s*IF (NOT )?TASK ([\\w-]+(?:\\s*,\\s*[\\w-]+)*)\\s*-->\\s*");
     private static final Pattern IF_END = Pattern.compile("\\s*<!--\\s*END IF\\s*-->\\s*");
+    /** A table the composer writes from the table of tasks: {@code <!-- TABLE scenes -->} … {@code <!-- END TABLE -->}. */
+    private static final Pattern TABLE = Pattern.compile("\\s*<!--\\s*TABLE ([a-z]+)\\s*-->\\s*");
+    private static final Pattern TABLE_END = Pattern.compile("\\s*<!--\\s*END TABLE\\s*-->\\s*");
     /** Inside a task's section: a block for some of the hint levels ({@code <!-- IF HINTS goal, steps -->}). */
     private static final Pattern IF_HINTS = Pattern.compile("\\s*<!--\\s*IF HINTS ([a-z]+(?:\\s*,\\s*[a-z]+)*)\\s*-->\\s*");
     private static final Pattern LINE_TASK = Pattern.compile("\\s*<!--\\s*task: ([\\w-]+)\\s*-->\\s*$");
@@ -94,6 +99,14 @@ public final class AssignmentDocs {
                                 out.addAll(lines(sec.lines, sec.firstLine, sec.id));
                                 out.add("");
                             });
+                    continue;
+                }
+                Matcher table = TABLE.matcher(line);
+                if (table.matches()) {
+                    int begin = ++n;
+                    n = end(lines, n, TABLE, TABLE_END, offset + begin, "TABLE " + table.group(1), "<!-- END TABLE -->");
+                    out.addAll(generated(table.group(1), offset + begin));
+                    n++;
                     continue;
                 }
                 Matcher levels = IF_HINTS.matcher(line);
@@ -155,6 +168,26 @@ public final class AssignmentDocs {
                 n++;
             }
             return out;
+        }
+
+        /**
+         * The rows of a generated table: {@code scenes}, each chosen task's graded scenes under its
+         * number and title (docs/grading.md), its header first.
+         */
+        private List<String> generated(String name, int n) {
+            if (!name.equals("scenes")) {
+                throw new IllegalArgumentException(fileName + ":" + n + ": no table \"" + name + "\"; the composer writes: scenes");
+            }
+            List<String> rows = new ArrayList<>(List.of("| task | scenes |", "| --- | --- |"));
+            for (Task task : assignment.tasks()) {
+                if (task.scenes().isEmpty()) {
+                    continue;
+                }
+                boolean extra = assignment.isExtraCredit(task.id());
+                rows.add("| Task " + assignment.number(task.id()) + " (" + task.title() + (extra ? ", extra credit" : "") + ") | "
+                        + String.join(", ", task.scenes()) + (extra ? " (bonus points: a failure costs nothing)" : "") + " |");
+            }
+            return rows;
         }
 
         /** The index of the line that ends the block whose content begins at {@code n}, blocks of the same kind nested inside counted. */
