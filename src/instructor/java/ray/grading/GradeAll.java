@@ -18,6 +18,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -62,15 +63,8 @@ public final class GradeAll implements Callable<Integer> {
     @Option(names = "--no-isolation", negatable = false, description = "Run student code as the grader's own user even as root.")
     boolean noIsolation;
 
-    @Option(names = "--assignment", description = "Grade this assignment: a preset's name or an assignment file (default: the project's"
-            + " assignment.properties).")
-    String assignmentGiven;
-
-    @Option(names = "--tasks", description = "The tasks of the assignment for this grade, by id, in order (overrides the assignment's).")
-    String tasksGiven;
-
-    @Option(names = "--hints", description = "The hint level of the failure messages: goal, steps or formulas (overrides the assignment's).")
-    String hintsGiven;
+    @Mixin
+    AssignmentOptions assignment = new AssignmentOptions();
 
     /** Where the log and progress lines go (the original stderr, as System.err is routed per grader). */
     PrintStream log;
@@ -101,8 +95,7 @@ public final class GradeAll implements Callable<Integer> {
                 throw new IllegalArgumentException("--jobs must be at least 1, not " + jobs);
             }
             // Every submission is graded as this assignment (the shared tree and each grader read it).
-            ray.assignment.Assignment.use(ray.assignment.Assignment.resolve(project, assignmentGiven,
-                    ray.assignment.Assignment.overrides(tasksGiven, hintsGiven)));
+            ray.assignment.Assignment.use(assignment.resolve(project));
             all = ClassSubmission.in(submissions, out);
         } catch (IllegalArgumentException | ray.assignment.AssignmentException e) {
             log.println("error: " + e.getMessage());

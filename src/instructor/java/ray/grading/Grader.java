@@ -13,6 +13,7 @@ import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -61,15 +62,8 @@ public final class Grader implements Callable<Integer> {
     @Option(names = "--no-isolation", negatable = false, description = "Run student code as the grader's own user even as root.")
     boolean noIsolation;
 
-    @Option(names = "--assignment", description = "Grade this assignment: a preset's name or an assignment file (default: the project's"
-            + " assignment.properties).")
-    String assignmentGiven;
-
-    @Option(names = "--tasks", description = "The tasks of the assignment for this grade, by id, in order (overrides the assignment's).")
-    String tasksGiven;
-
-    @Option(names = "--hints", description = "The hint level of the failure messages: goal, steps or formulas (overrides the assignment's).")
-    String hintsGiven;
+    @Mixin
+    AssignmentOptions assignment = new AssignmentOptions();
 
     @Option(names = "--task", description = "Grade only this task's tests (a regrade of one task, or the diagnosis evaluation).")
     Integer onlyTask;
@@ -141,8 +135,7 @@ public final class Grader implements Callable<Integer> {
         try {
             // The assignment graded: the project's file (in a grading package, the one it was packed with), or the one given.
             if (sharedTree == null) {
-                ray.assignment.Assignment.use(ray.assignment.Assignment.resolve(project, assignmentGiven,
-                        ray.assignment.Assignment.overrides(tasksGiven, hintsGiven)));
+                ray.assignment.Assignment.use(assignment.resolve(project));
             }
             Files.createDirectories(out);
             work = Files.createTempDirectory(out, "work-");
