@@ -195,9 +195,9 @@ public class PixelKindsTest {
 
     @Test
     public void eachKindNamesItsTaskAsTheStudentsTestsNumberThem() {
-        assertEquals(StudentTask.of("sphere").number, SurfaceKind.SPHERE.task);
-        assertEquals(StudentTask.of("triangle").number, SurfaceKind.TRIANGLE.task);
-        assertEquals(StudentTask.of("cylinder").number, SurfaceKind.CYLINDER.task);
+        assertEquals(StudentTask.of("sphere").number, SurfaceKind.SPHERE.task());
+        assertEquals(StudentTask.of("triangle").number, SurfaceKind.TRIANGLE.task());
+        assertEquals(StudentTask.of("cylinder").number, SurfaceKind.CYLINDER.task());
         assertEquals("triangles (Task 3)", SurfaceKind.TRIANGLE.phrase(380));
         assertEquals("a sphere (Task 2)", SurfaceKind.SPHERE.phrase(1));
         assertEquals("cylinders (Task 6)", SurfaceKind.CYLINDER.phrase(2));

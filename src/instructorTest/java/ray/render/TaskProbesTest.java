@@ -58,7 +58,7 @@ public class TaskProbesTest {
     @Test
     public void thePartsAreTheStudentFiles() {
         for (StudentTask task : StudentTask.values()) {
-            List<String> files = Arrays.stream(Part.values()).filter(p -> p.task == task.number).map(p -> p.file)
+            List<String> files = Arrays.stream(Part.values()).filter(p -> p.task() == task.number).map(p -> p.file)
                     .collect(Collectors.toList());
             assertEquals(task.label(), task.files, files);
         }
@@ -81,7 +81,7 @@ public class TaskProbesTest {
             List<Path> folders = new ArrayList<>();
             Set<String> expected = new TreeSet<>();
             for (Part part : Part.values()) {
-                if (part.task == task.number) {
+                if (part.task() == task.number) {
                     folders.add(STUB_CLASSES.get(part));
                     expected.add(part.name());
                 }
@@ -154,7 +154,7 @@ public class TaskProbesTest {
                 TaskProbes.stillStubsLine(EnumSet.of(Part.CYLINDER)));
         for (Part part : Part.values()) {
             String line = TaskProbes.stillStubsLine(EnumSet.of(part));
-            assertTrue(line, line.contains(part.file) && line.contains("TODO(Task " + part.task + ")"));
+            assertTrue(line, line.contains(part.file) && line.contains("TODO(Task " + part.task() + ")"));
             assertTrue(line, line.chars().allMatch(c -> c >= ' ' && c < 127));
         }
     }

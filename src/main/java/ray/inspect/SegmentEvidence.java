@@ -38,7 +38,7 @@ final class SegmentEvidence {
         for (ProbeNode p : primitives) {
             String problem = answerOnSegment(p, end);
             if (problem != null) {
-                int task = SurfaceKind.of(p.surface).task;
+                int task = SurfaceKind.of(p.surface).task();
                 String method = p.surface.getClass().getSimpleName() + ".intersect";
                 return "! " + ProbeTree.path(roots, p, names) + " " + problem + ", the segment a group gives it once it holds the"
                         + " closest hit (t = " + Fmt.num(end) + ", at " + ProbeTree.path(roots, nearest, names) + "): a hit must lie in"

@@ -58,8 +58,6 @@ public final class TaskProbes {
 
         /** Its task's id in the table. */
         public final String taskId;
-        /** Its task's number in this assignment, or 0 when the task ships solved. */
-        public final int task;
         public final String className;
         /** The file to edit, relative to the project folder. */
         public final String file;
@@ -68,14 +66,18 @@ public final class TaskProbes {
             Task owner = TaskTable.standard().ofStudentClass(className)
                     .orElseThrow(() -> new IllegalStateException(className + " is in no task's files in " + TaskTable.PROJECT_FILE));
             this.taskId = owner.id();
-            this.task = Assignment.current().number(owner.id());
             this.className = className;
             this.file = owner.projectFiles().get(owner.classNames().indexOf(className));
         }
 
+        /** Its task's number in this assignment, or 0 when the task ships solved. */
+        public int task() {
+            return Assignment.current().number(taskId);
+        }
+
         /** Whether students write it in this assignment. */
         public boolean isStudents() {
-            return task > 0;
+            return task() > 0;
         }
     }
 
@@ -193,7 +195,7 @@ public final class TaskProbes {
         Map<Integer, List<Part>> byTask = new TreeMap<>();
         for (Part part : Part.values()) {
             if (stubs.contains(part) && part.isStudents()) {
-                byTask.computeIfAbsent(part.task, t -> new ArrayList<>()).add(part);
+                byTask.computeIfAbsent(part.task(), t -> new ArrayList<>()).add(part);
             }
         }
         if (byTask.isEmpty()) {

@@ -26,16 +26,18 @@ public enum SurfaceKind {
 
     /** The id (in the table of tasks) of the task whose intersection code finds this kind, or null when none does. */
     public final String taskId;
-    /** That task's number in this assignment, or 0 when there is none or it ships solved. */
-    public final int task;
     private final String one;
     private final String many;
 
     SurfaceKind(String taskId, String one, String many) {
         this.taskId = taskId;
-        this.task = taskId == null ? 0 : ray.assignment.Assignment.current().number(taskId);
         this.one = one;
         this.many = many;
+    }
+
+    /** That task's number in this assignment, or 0 when there is none or it ships solved. */
+    public int task() {
+        return taskId == null ? 0 : ray.assignment.Assignment.current().number(taskId);
     }
 
     /** The kind of the primitive a hit record names ({@link #OTHER} for null). */
@@ -48,6 +50,7 @@ public enum SurfaceKind {
      * "a triangle (Task 3)" for one, "the background" (no task).
      */
     public String phrase(int count) {
+        int task = task();
         return (count == 1 ? one : many) + (task > 0 ? " (Task " + task + ")" : "");
     }
 
