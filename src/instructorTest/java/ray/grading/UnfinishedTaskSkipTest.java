@@ -69,7 +69,7 @@ public class UnfinishedTaskSkipTest {
                 "    " + BONUS + "@Test public void a_bonusLoops() " + LOOP,
                 "    " + BONUS + "@Test public void b_bonusWouldPass() { }",
                 "    @Test public void c_regularPasses() { }"), StandardCharsets.UTF_8);
-        Files.writeString(sources.resolve("shading/TextureHiddenLoopTest.java"), demo("ray.shading", "TextureHiddenLoopTest", 1,
+        Files.writeString(sources.resolve("shading/RepeatTextureHiddenLoopTest.java"), demo("ray.shading", "RepeatTextureHiddenLoopTest", 1,
                 "    @Points(value = 1, visibility = ray.testing.Visibility.HIDDEN)"
                         + " @Test public void a_secretCaseLoops() " + LOOP,
                 "    @Test public void b_wouldPass() { }"), StandardCharsets.UTF_8);
@@ -106,7 +106,7 @@ public class UnfinishedTaskSkipTest {
         }
         assertTrue("another task still runs", outcomes.get("SphereFineTest.passes").passed());
         // A hidden test is not named, not even by its method.
-        String afterHidden = outcomes.get("TextureHiddenLoopTest.b_wouldPass").message();
+        String afterHidden = outcomes.get("RepeatTextureHiddenLoopTest.b_wouldPass").message();
         assertTrue(afterHidden, afterHidden.contains("skipped: your code did not finish in a hidden test,")
                 && !afterHidden.contains("secretCase"));
         // A bonus loop skips the later bonus tests of its task, not its regular ones.
