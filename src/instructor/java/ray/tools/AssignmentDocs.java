@@ -94,11 +94,10 @@ public final class AssignmentDocs {
                         run.add(new Section(id, offset + begin, lines.subList(begin, n)));
                         n++;
                     }
-                    run.stream().filter(sec -> assignment.isChosen(sec.id)).sorted(Comparator.comparingInt(sec -> assignment.number(sec.id)))
-                            .forEach(sec -> {
-                                out.addAll(lines(sec.lines, sec.firstLine, sec.id));
-                                out.add("");
-                            });
+                    for (Section sec : chosenInOrder(run)) {
+                        out.addAll(lines(sec.lines, sec.firstLine, sec.id));
+                        out.add("");
+                    }
                     continue;
                 }
                 Matcher table = TABLE.matcher(line);
@@ -160,14 +159,27 @@ public final class AssignmentDocs {
                         }
                         run.add(new Section(known(lineTask.group(1), offset + n), offset + n, List.of(lines.get(n).substring(0, lineTask.start()))));
                     }
-                    run.stream().filter(l -> assignment.isChosen(l.id)).sorted(Comparator.comparingInt(l -> assignment.number(l.id)))
-                            .forEach(l -> out.add(renumber(l.lines.get(0), l.firstLine)));
+                    for (Section marked : chosenInOrder(run)) {
+                        out.add(renumber(marked.lines.get(0), marked.firstLine));
+                    }
                     continue;
                 }
                 out.add(renumber(line, offset + n));
                 n++;
             }
             return out;
+        }
+
+        /** Of a run of task sections or task lines, the chosen tasks', in the assignment's order (a task's own in the run's). */
+        private List<Section> chosenInOrder(List<Section> run) {
+            List<Section> chosen = new ArrayList<>();
+            for (Section section : run) {
+                if (assignment.isChosen(section.id)) {
+                    chosen.add(section);
+                }
+            }
+            chosen.sort(Comparator.comparingInt(section -> assignment.number(section.id)));
+            return chosen;
         }
 
         /**

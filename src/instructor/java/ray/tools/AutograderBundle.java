@@ -38,7 +38,7 @@ public final class AutograderBundle {
         List<Path> classes = new ArrayList<>();
         List<Path> libraries = new ArrayList<>();
         GradingKit.parse(args, 2, classes, libraries);
-        GradingKit.useAssignment(Path.of(args[0]), args);
+        AssignmentArguments.use(Path.of(args[0]), args);
         Path zip = Path.of(args[1]);
         build(Path.of(args[0]), zip, classes, libraries);
         System.out.println("autograder: " + zip + " (" + Files.size(zip) / 1024 + " KiB)");

@@ -12,7 +12,6 @@ import java.util.jar.JarOutputStream;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import ray.assignment.Assignment;
-import ray.assignment.AssignmentException;
 import ray.grading.PrecompiledTree;
 import ray.grading.ProjectTree;
 
@@ -45,7 +44,7 @@ public final class GradingKit {
         try {
             for (String part : ProjectTree.PARTS) {
                 if (part.equals(Assignment.PROJECT_FILE)) {
-                    // The assignment the package grades, complete (useAssignment), whatever the project's file says.
+                    // The assignment the package grades, complete (AssignmentArguments), whatever the project's file says.
                     byte[] text = Assignment.current().toFileText("The assignment this package grades (written when it was packed).")
                             .getBytes(java.nio.charset.StandardCharsets.UTF_8);
                     sink.put(prefix + "ray1/" + part, text, false);
@@ -75,31 +74,6 @@ public final class GradingKit {
             if (library.toString().endsWith(".jar")) {
                 sink.put(prefix + "lib/" + library.getFileName(), Files.readAllBytes(library), false);
             }
-        }
-    }
-
-    /**
-     * Makes the assignment a package is for this process's ({@link Assignment#use}): the one
-     * {@code --assignment PRESET|FILE} and {@code --tasks ID,…} among {@code args} name (before
-     * {@code --classes}), else the project's assignment file. A bad one ends the process with its one-line error.
-     */
-    public static void useAssignment(Path project, String[] args) throws IOException {
-        String given = null;
-        java.util.Map<String, String> overrides = new java.util.LinkedHashMap<>();
-        for (int i = 0; i + 1 < args.length && !args[i].equals("--classes"); i++) {
-            if (args[i].equals("--assignment")) {
-                given = args[i + 1];
-            } else if (args[i].equals("--tasks")) {
-                overrides.put("tasks", args[i + 1]);
-            } else if (args[i].equals("--hints")) {
-                overrides.put("hints", args[i + 1]);
-            }
-        }
-        try {
-            Assignment.use(Assignment.resolve(project, given, overrides));
-        } catch (AssignmentException e) {
-            System.err.println("error: " + e.getMessage());
-            System.exit(2);
         }
     }
 

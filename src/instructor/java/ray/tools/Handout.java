@@ -8,7 +8,6 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Comparator;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -18,7 +17,6 @@ import java.util.stream.Stream;
 import org.apache.commons.compress.archivers.zip.ZipArchiveEntry;
 import org.apache.commons.compress.archivers.zip.ZipArchiveOutputStream;
 import ray.assignment.Assignment;
-import ray.assignment.AssignmentException;
 import ray.grading.SolutionMarkers;
 
 /**
@@ -54,35 +52,7 @@ public final class Handout {
      */
     public static void main(String[] args) throws IOException {
         Path project = Path.of(args.length > 0 ? args[0] : ".");
-        String given = null;
-        Map<String, String> overrides = new LinkedHashMap<>();
-        for (int i = 1; i + 1 < args.length; i += 2) {
-            switch (args[i]) {
-                case "--assignment":
-                    given = args[i + 1].isBlank() ? null : args[i + 1];
-                    break;
-                case "--tasks":
-                    if (!args[i + 1].isBlank()) {
-                        overrides.put("tasks", args[i + 1]);
-                    }
-                    break;
-                case "--hints":
-                    if (!args[i + 1].isBlank()) {
-                        overrides.put("hints", args[i + 1]);
-                    }
-                    break;
-                default:
-                    throw new IllegalArgumentException("unknown option " + args[i]);
-            }
-        }
-        Assignment assignment;
-        try {
-            assignment = Assignment.resolve(project, given, overrides);
-        } catch (AssignmentException e) {
-            System.err.println("handout: " + e.getMessage());
-            System.exit(2);
-            return;
-        }
+        Assignment assignment = AssignmentArguments.use(project, args);
         Path folder = project.resolve("build/handout/ray1");
         Path zip = project.resolve("build/distributions/ray1-handout.zip");
         List<String> files = build(project, folder, assignment);

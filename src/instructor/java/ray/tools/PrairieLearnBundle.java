@@ -62,7 +62,7 @@ public final class PrairieLearnBundle {
         List<Path> classes = new ArrayList<>();
         List<Path> libraries = new ArrayList<>();
         GradingKit.parse(args, 3, classes, libraries);
-        GradingKit.useAssignment(Path.of(args[0]), args);
+        AssignmentArguments.use(Path.of(args[0]), args);
         Path folder = Path.of(args[1]);
         build(Path.of(args[0]), folder, args[2], hiddenTests, classes, libraries);
         System.out.println("prairielearn: " + folder + " (image " + args[2] + ", hidden tests: " + hiddenTests + "; see its README.md)");

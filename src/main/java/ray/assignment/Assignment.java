@@ -92,7 +92,12 @@ public final class Assignment {
 
     /** A ready-made assignment by name ("intersections", "course-2017"). */
     public static Assignment preset(String name) {
-        return read(new StringReader(presetText(name)), name, TaskTable.standard(), Map.of());
+        return preset(name, Map.of());
+    }
+
+    /** A ready-made assignment with keys given for one run. */
+    private static Assignment preset(String name, Map<String, String> overrides) {
+        return read(new StringReader(presetText(name)), name, TaskTable.standard(), overrides);
     }
 
     /** The names of the ready-made assignments. */
@@ -106,9 +111,8 @@ public final class Assignment {
      * preset); {@code overrides} holds keys given for this run alone (-Ptasks as "tasks").
      */
     public static Assignment resolve(Path project, String given, Map<String, String> overrides) throws IOException {
-        TaskTable table = TaskTable.standard();
         if (given != null && presetNames().contains(given)) {
-            return read(new StringReader(presetText(given)), given, table, overrides);
+            return preset(given, overrides);
         }
         Path file = given != null ? project.resolve(given) : project.resolve(PROJECT_FILE);
         if (given != null && !Files.isRegularFile(file)) {
@@ -116,10 +120,10 @@ public final class Assignment {
                     + String.join(", ", presetNames()));
         }
         if (!Files.isRegularFile(file)) {
-            return read(new StringReader(presetText(DEFAULT_PRESET)), DEFAULT_PRESET, table, overrides);
+            return preset(DEFAULT_PRESET, overrides);
         }
         try (Reader reader = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            return read(reader, given != null ? given : PROJECT_FILE, table, overrides);
+            return read(reader, given != null ? given : PROJECT_FILE, TaskTable.standard(), overrides);
         }
     }
 
@@ -170,13 +174,13 @@ public final class Assignment {
 
         List<String> ids = TaskTable.list(p.getProperty("tasks"));
         if (ids.isEmpty()) {
-            throw new AssignmentException(where + ": no tasks; give `tasks = id, id, …` from " + String.join(", ", idsOf(table)));
+            throw new AssignmentException(where + ": no tasks; give `tasks = id, id, …` from " + String.join(", ", table.ids()));
         }
         List<Task> tasks = new ArrayList<>();
         Set<String> seen = new LinkedHashSet<>();
         for (String id : ids) {
             if (table.find(id).isEmpty()) {
-                throw new AssignmentException(where + ": there is no task \"" + id + "\"; the tasks are " + String.join(", ", idsOf(table)));
+                throw new AssignmentException(where + ": there is no task \"" + id + "\"; the tasks are " + String.join(", ", table.ids()));
             }
             if (!seen.add(id)) {
                 throw new AssignmentException(where + ": the task " + id + " is chosen twice");
@@ -194,7 +198,7 @@ public final class Assignment {
         if (p.getProperty("extraCredit") != null) {
             for (String id : TaskTable.list(p.getProperty("extraCredit"))) {
                 if (table.find(id).isEmpty()) {
-                    throw new AssignmentException(where + ": extraCredit names \"" + id + "\", which is no task; the tasks are " + String.join(", ", idsOf(table)));
+                    throw new AssignmentException(where + ": extraCredit names \"" + id + "\", which is no task; the tasks are " + String.join(", ", table.ids()));
                 }
                 if (seen.contains(id)) {
                     extra.add(id);
@@ -212,7 +216,7 @@ public final class Assignment {
             if (key.startsWith(TASK_HINTS)) {
                 String id = key.substring(TASK_HINTS.length());
                 if (table.find(id).isEmpty()) {
-                    throw new AssignmentException(where + ": " + key + " names no task; the tasks are " + String.join(", ", idsOf(table)));
+                    throw new AssignmentException(where + ": " + key + " names no task; the tasks are " + String.join(", ", table.ids()));
                 }
                 HintLevel level = level(p.getProperty(key), where, key);
                 if (level != hints && seen.contains(id)) {
@@ -225,7 +229,7 @@ public final class Assignment {
             if (key.startsWith(TASK_POINTS)) {
                 String id = key.substring(TASK_POINTS.length());
                 if (table.find(id).isEmpty()) {
-                    throw new AssignmentException(where + ": " + key + " names no task; the tasks are " + String.join(", ", idsOf(table)));
+                    throw new AssignmentException(where + ": " + key + " names no task; the tasks are " + String.join(", ", table.ids()));
                 }
                 double points = TaskTable.positiveOrZero(p.getProperty(key), where + ": " + key);
                 if (points != table.get(id).points() && seen.contains(id)) {
@@ -246,10 +250,6 @@ public final class Assignment {
             throw new AssignmentException(where + ": " + key + " = " + value.trim() + "; expected goal, steps or formulas");
         }
         return level;
-    }
-
-    private static List<String> idsOf(TaskTable table) {
-        return table.all().stream().map(Task::id).collect(java.util.stream.Collectors.toList());
     }
 
     private static String presetText(String name) {

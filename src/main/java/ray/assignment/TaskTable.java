@@ -47,6 +47,11 @@ public final class TaskTable {
         return List.copyOf(tasks.values());
     }
 
+    /** Every task's id, in the table's order. */
+    public List<String> ids() {
+        return List.copyOf(tasks.keySet());
+    }
+
     /** The task with this id, or empty. */
     public Optional<Task> find(String id) {
         return Optional.ofNullable(tasks.get(id));
@@ -56,7 +61,7 @@ public final class TaskTable {
     public Task get(String id) {
         Task task = tasks.get(id);
         if (task == null) {
-            throw new AssignmentException("there is no task \"" + id + "\"; the tasks are " + String.join(", ", tasks.keySet()));
+            throw new AssignmentException("there is no task \"" + id + "\"; the tasks are " + String.join(", ", ids()));
         }
         return task;
     }
