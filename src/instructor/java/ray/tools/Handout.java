@@ -79,7 +79,8 @@ public final class Handout {
         List<String> written = new ArrayList<>();
         for (Path file : kitFiles(project)) {
             String relative = project.relativize(file).toString().replace('\\', '/');
-            if (relative.equals(Assignment.PROJECT_FILE) || isTestOfUnchosenTask(relative, assignment)) {
+            if (relative.equals(Assignment.PROJECT_FILE) || isTestOfUnchosenTask(relative, assignment)
+                    || isOtherCoursesScene(relative, assignment)) {
                 continue;
             }
             Path destination = target.resolve(relative);
@@ -148,6 +149,14 @@ public final class Handout {
             }
         }
         return files;
+    }
+
+    /** The folder of ray1's scenes in the course's 2019 conventions, which ship only with a 2019 assignment. */
+    static final String SCENES_2019 = "scenes-2019";
+
+    /** Whether {@code relative} is a scene file (or reference) of a course other than the assignment's. */
+    static boolean isOtherCoursesScene(String relative, Assignment assignment) {
+        return relative.startsWith(SCENES_2019 + "/") && !assignment.course().equals("2019");
     }
 
     /** Whether a file or folder of this name is the instructor's: its name starts with "instructor". */

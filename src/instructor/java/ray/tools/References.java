@@ -17,6 +17,8 @@ import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneException;
 import ray.scene.SceneFiles;
+import ray.scene.SceneOptions;
+import ray.shading.Course;
 
 /**
  * Renders the reference images: every scene under scenes/ (recursively, except scenes/reference
@@ -26,7 +28,8 @@ import ray.scene.SceneFiles;
  * <p>Also writes the folder's README.md and the marker file {@link RenderCommand#REFERENCE_MARKER}
  * (so {@code ray1 render} refuses to write there), and deletes PNGs of scenes that no longer exist.
  *
- * <p>Run by {@code gradle references}; usage {@code References [SCENES-FOLDER]} (default scenes).
+ * <p>Run by {@code gradle references}; usage {@code References [SCENES-FOLDER [COURSE]]} (default scenes,
+ * by the assignment's course; {@code References scenes-2019 2019} renders the 2019 scenes by 2019's conventions).
  */
 public final class References {
     static final String README = "# Reference renders\n"
@@ -45,11 +48,17 @@ public final class References {
 
     public static void main(String[] args) throws IOException {
         Path scenes = Path.of(args.length > 0 ? args[0] : "scenes");
-        System.exit(run(scenes));
+        Course course = args.length > 1 ? Course.of(args[1]) : null;
+        System.exit(run(scenes, SceneOptions.orAssignment(course, null)));
     }
 
     /** Renders every scene under {@code scenes} into scenes/reference; returns the exit status. */
     static int run(Path scenes) throws IOException {
+        return run(scenes, SceneOptions.ofAssignment());
+    }
+
+    /** Renders every scene under {@code scenes}, loaded as {@code options} say, into its reference folder. */
+    static int run(Path scenes, SceneOptions options) throws IOException {
         Path reference = scenes.resolve("reference");
         Map<String, Path> byName = new TreeMap<>();
         int failures = 0;
@@ -73,7 +82,7 @@ public final class References {
         PrintWriter warnings = new PrintWriter(System.err);
         for (Map.Entry<String, Path> entry : byName.entrySet()) {
             try {
-                Scene scene = SceneWarnings.load(entry.getValue(), warnings);
+                Scene scene = SceneWarnings.load(entry.getValue(), options, warnings);
                 RenderResult result = new Renderer(scene, 0, 0).render();
                 Path png = reference.resolve(entry.getKey() + ".png");
                 PngWriter.write(result.image, scene.getExposure(), png);

@@ -40,7 +40,7 @@ public class SceneLoaderErrorsSpecialTest {
                 """);
         Path resolved = folder.getRoot().toPath().toAbsolutePath().resolve("meshes/nope.obj");
         SceneFixtures.assertError(SceneFixtures.loadError(scene), scene, 5, 11, "no such mesh file " + resolved
-                + "; expected an OBJ file (a relative path in <data> starts from the scene file's folder)");
+                + "; expected an OBJ file (a relative path in <data> starts from the scene file's folder, or the nearest folder above it that has the file)");
     }
 
     @Test

@@ -71,7 +71,7 @@ public final class AccuracyCommand extends ManyScenesCommand {
                 });
         List<SceneStudy> studies = new ArrayList<>();
         int failures = eachScene(files, file -> {
-            Scene scene = SceneWarnings.load(file, err);
+            Scene scene = SceneWarnings.load(file, courseOptions.sceneOptions(spec.commandLine()), err);
             if (part != null && !part.fitsIn(scene.getWidth(), scene.getHeight())) {
                 err.println("error: " + file + ": the window " + part + " does not fit in its " + scene.getWidth() + "x"
                         + scene.getHeight() + " image");

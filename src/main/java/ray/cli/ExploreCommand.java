@@ -33,6 +33,9 @@ public final class ExploreCommand implements Callable<Integer> {
     @CommandLine.Mixin
     Verbosity verbosity;
 
+    @CommandLine.Mixin
+    CourseOptions courseOptions;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -47,9 +50,10 @@ public final class ExploreCommand implements Callable<Integer> {
             err.println("error: --reference " + reference + ": no such file; expected a PNG image");
             return 1;
         }
+        ray.scene.SceneOptions options = courseOptions.sceneOptions(spec.commandLine());
         Explorer explorer;
         try {
-            explorer = Explorer.start(sceneFile, reference, port);
+            explorer = Explorer.start(sceneFile, reference, port, options);
         } catch (SceneException e) {
             err.println("error: " + e.getMessage());
             return 1;

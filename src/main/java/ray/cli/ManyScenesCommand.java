@@ -25,6 +25,9 @@ abstract class ManyScenesCommand implements Callable<Integer> {
     @CommandLine.Mixin
     SceneArguments scenes;
 
+    @CommandLine.Mixin
+    CourseOptions courseOptions;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 

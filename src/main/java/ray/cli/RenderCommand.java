@@ -103,7 +103,7 @@ public final class RenderCommand extends ManyScenesCommand {
                 err.println("error: " + file + ": renders to " + folder.resolve(name + ".png") + ", as " + previous + " does; rename one");
                 return false;
             }
-            Scene scene = SceneWarnings.load(file, err);
+            Scene scene = SceneWarnings.load(file, courseOptions.sceneOptions(spec.commandLine()), err);
             if (cameraRays) {
                 writeCameraRays(scene, folder.resolve(name + ".png"), name, out);
             } else {

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import ray.scene.Scene;
 import ray.scene.SceneLoader;
+import ray.scene.SceneOptions;
 
 /**
  * How every command that loads a scene shows its warnings ({@link Scene#warnings()}): each line
@@ -15,9 +16,9 @@ public final class SceneWarnings {
     private SceneWarnings() {
     }
 
-    /** Loads {@code file} as {@link SceneLoader#load} does and prints its warnings on {@code err}. */
-    public static Scene load(Path file, PrintWriter err) {
-        Scene scene = SceneLoader.load(file);
+    /** Loads {@code file} as {@link SceneLoader#load(Path, SceneOptions)} does and prints its warnings on {@code err}. */
+    public static Scene load(Path file, SceneOptions options, PrintWriter err) {
+        Scene scene = SceneLoader.load(file, options);
         print(scene.warnings(), err);
         return scene;
     }

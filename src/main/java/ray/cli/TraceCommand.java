@@ -38,6 +38,9 @@ public final class TraceCommand implements Callable<Integer> {
     @CommandLine.Mixin
     Verbosity verbosity;
 
+    @CommandLine.Mixin
+    CourseOptions courseOptions;
+
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -46,9 +49,10 @@ public final class TraceCommand implements Callable<Integer> {
         OptionChecks.samples(spec.commandLine(), "--samples", samples);
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
+        ray.scene.SceneOptions options = courseOptions.sceneOptions(spec.commandLine());
         Scene scene;
         try {
-            scene = SceneWarnings.load(sceneFile, err);
+            scene = SceneWarnings.load(sceneFile, options, err);
         } catch (SceneException e) {
             err.println("error: " + e.getMessage());
             return 1;

@@ -22,6 +22,7 @@ import ray.render.SamplePattern;
 import ray.scene.Scene;
 import ray.scene.SceneFiles;
 import ray.scene.SceneLoader;
+import ray.scene.SceneOptions;
 
 /**
  * One scene file as the explore page sees it: loaded, rendered exactly as {@code ray1 render}
@@ -37,6 +38,8 @@ final class ExploreSession {
     private BufferedImage render;
     private byte[] renderPng;
     private String renderError;
+    /** How the scene file is read (its course conventions, where data paths start), on every reload alike. */
+    private final SceneOptions options;
     private long renderMillis;
     private int renderId;
     private final List<String> notes = new ArrayList<>();
@@ -50,8 +53,9 @@ final class ExploreSession {
      * @param referenceOverride the reference image to compare with, or null to look for
      *                          {@code reference/<name>.png} beside the scene or in its parent folder
      */
-    ExploreSession(Path sceneFile, Path referenceOverride) {
+    ExploreSession(Path sceneFile, Path referenceOverride, SceneOptions options) {
         this.sceneFile = sceneFile;
+        this.options = options;
         this.referenceOverride = referenceOverride;
     }
 
@@ -61,7 +65,7 @@ final class ExploreSession {
      * throws while rendering becomes the render's error (no image), as the page shows it.
      */
     void reload() {
-        Scene loaded = SceneLoader.load(sceneFile);
+        Scene loaded = SceneLoader.load(sceneFile, options);
         scene = loaded;
         renderId++;
         notes.clear();

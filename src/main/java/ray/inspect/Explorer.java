@@ -18,11 +18,17 @@ public final class Explorer implements AutoCloseable {
      * Loads and renders {@code sceneFile} and serves it on 127.0.0.1:{@code port} (0: any free port).
      *
      * @param reference the image to compare with, or null for the scene's own reference, if any
+     * @param options   the course conventions and scene root to load it with
      * @throws ray.scene.SceneException when the scene does not load
      * @throws java.net.BindException   when the port is taken
      */
     public static Explorer start(Path sceneFile, Path reference, int port) throws IOException {
-        ExploreSession session = new ExploreSession(sceneFile, reference);
+        return start(sceneFile, reference, port, ray.scene.SceneOptions.ofAssignment());
+    }
+
+    /** As {@link #start(Path, Path, int)}, loading the scene as {@code options} say. */
+    public static Explorer start(Path sceneFile, Path reference, int port, ray.scene.SceneOptions options) throws IOException {
+        ExploreSession session = new ExploreSession(sceneFile, reference, options);
         session.reload();
         return new Explorer(ExploreServer.start(session, port), session.warnings());
     }

@@ -4,13 +4,15 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.scene.Scene;
+import ray.shading.Course;
 import ray.shading.Light;
 import ray.shading.Shader;
 
 /**
  * One light's part of a direct-lighting shader's result at a hit, as numbers: l, r², n·l, the
  * shadow ray, the terms of the formula (Lambertian kd ⊙ I · max(0, n·l)/r², Phong's specular
- * ks ⊙ I · max(0, n·h)^p/r² with h = normalize(l + e)), and what the shader itself adds for the
+ * ks ⊙ I · max(0, n·h)^p/r² with h = normalize(l + e); under 2019's conventions kd/π and the
+ * specular term times max(0, n·l)), and what the shader itself adds for the
  * light. {@link LightReport} prints them for {@code ray1 trace}; {@link PixelStory} sends them to
  * {@code ray1 explore}'s page.
  */
@@ -63,7 +65,10 @@ final class LightFacts {
         Vec3 unshadowed = shader.shade(hit, ray, recorded.onlyLight(light, true), 0);
         ShadowCheck shadow = isZero(unshadowed) ? null : ShadowCheck.of(scene, recorded, hit, light.getPosition());
         Vec3 kd = shader.diffuseColorAt(hit);
-        Vec3 diffuse = kd == null ? null : kd.times(intensity).times(Math.max(0, nl) / r2);
+        // 2019's BRDFs divide ρd by π and weight the highlight by n·l too (Course).
+        boolean y2019 = shader.course() == Course.Y2019;
+        double diffuseScale = y2019 ? 1 / Math.PI : 1;
+        Vec3 diffuse = kd == null ? null : kd.times(intensity).times(diffuseScale * Math.max(0, nl) / r2);
         Vec3 ks = shader.getSpecularColor();
         Double p = shader.getExponent();
         Vec3 h = null;
@@ -73,7 +78,7 @@ final class LightFacts {
             Vec3 e = ray.direction.normalized().negate();
             h = l.plus(e).normalized();
             nh = hit.normal.dot(h);
-            specular = ks.times(intensity).times(Math.pow(Math.max(0, nh), p) / r2);
+            specular = ks.times(intensity).times(Math.pow(Math.max(0, nh), p) * (y2019 ? Math.max(0, nl) : 1) / r2);
         }
         boolean blocked = shadow != null && shadow.blockedByGroup;
         Vec3 adds = blocked ? Vec3.ZERO : shader.shade(hit, ray, recorded.onlyLight(light, false), 0);

@@ -5,6 +5,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 import ray.scene.Scene;
+import ray.shading.Course;
 import ray.shading.Light;
 import ray.shading.Shader;
 
@@ -36,16 +37,19 @@ final class LightReport {
         } else {
             f.shadow.print(names, in, out);
         }
+        boolean y2019 = shader.course() == Course.Y2019;
         if (f.diffuse != null) {
-            out.println(Fmt.row(in, "diffuse", "kd ⊙ I · max(0, n·l) / r² = " + Fmt.vec(f.kd) + " ⊙ " + Fmt.vec(intensity)
+            out.println(Fmt.row(in, "diffuse", (y2019 ? "kd/π" : "kd") + " ⊙ I · max(0, n·l) / r² = " + Fmt.vec(f.kd)
+                    + (y2019 ? "/π" : "") + " ⊙ " + Fmt.vec(intensity)
                     + " · " + Fmt.num(Math.max(0, f.nl)) + " / " + Fmt.num(f.r2) + " = " + Fmt.vec(f.diffuse)));
         }
         if (f.specular != null) {
             out.println(Fmt.row(in, "h", Fmt.vec(f.h) + "   (normalize(l + e), the half vector)"));
             out.println(Fmt.row(in, "n·h", Fmt.num(f.nh)));
-            out.println(Fmt.row(in, "specular", "ks ⊙ I · max(0, n·h)^p / r² = " + Fmt.vec(f.ks) + " ⊙ " + Fmt.vec(intensity)
-                    + " · " + Fmt.num(Math.max(0, f.nh)) + "^" + Fmt.num(f.exponent) + " / " + Fmt.num(f.r2) + " = "
-                    + Fmt.vec(f.specular) + "   (not gated by n·l)"));
+            out.println(Fmt.row(in, "specular", (y2019 ? "ks ⊙ I · max(0, n·h)^p · max(0, n·l) / r² = " : "ks ⊙ I · max(0, n·h)^p / r² = ")
+                    + Fmt.vec(f.ks) + " ⊙ " + Fmt.vec(intensity) + " · " + Fmt.num(Math.max(0, f.nh)) + "^" + Fmt.num(f.exponent)
+                    + (y2019 ? " · " + Fmt.num(Math.max(0, f.nl)) : "") + " / " + Fmt.num(f.r2) + " = "
+                    + Fmt.vec(f.specular) + (y2019 ? "   (2019: weighted by n·l like the diffuse term)" : "   (not gated by n·l)")));
         }
         out.println(Fmt.row(in, "adds", f.blocked() ? "nothing: the shadow ray is blocked" : Fmt.vec(f.adds)));
         return f.adds;

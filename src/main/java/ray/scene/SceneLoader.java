@@ -15,6 +15,8 @@ import org.w3c.dom.Element;
 import org.w3c.dom.NamedNodeMap;
 import org.w3c.dom.Node;
 import ray.camera.Camera;
+import ray.shading.OnlyInCourse;
+import ray.shading.Shader;
 import ray.shading.Texture;
 import ray.math.Vec3;
 import ray.surface.MeshData;
@@ -30,7 +32,7 @@ import ray.surface.WarnsOnLoad;
  *
  * <p>A setter's parameter types say how to read the element: numbers ({@code int}, {@code double},
  * one per parameter: {@code <image>300 200</image>} calls {@code setImage(int, int)}), {@link Vec3}
- * (three numbers), {@code String}, {@link Path} (resolved against the scene file's folder),
+ * (three numbers), {@code String}, {@link Path} (a data path: see {@link #resolve}),
  * {@link MeshData} (an OBJ file read by {@link ObjReader}), or an object built from the element's
  * children. Element names match case-insensitively. After an object's properties are set, its
  * {@code complete()} method, if any, checks it and may return the object to use instead.
@@ -45,19 +47,33 @@ public final class SceneLoader {
     private static final Pattern INTEGER = Pattern.compile("[+-]?\\d+");
 
     private final Path file;
+    private final SceneOptions options;
+    /** Elements of another course's conventions ({@link OnlyInCourse}), refused together once the file is read. */
+    private final List<Element> otherCourse = new ArrayList<>();
+    /** The course those elements belong to. */
+    private String otherYear;
     private final Map<String, Object> named = new HashMap<>();
     /** The element that defined each name, for the line of the first one when a name is used twice. */
     private final Map<String, Element> namedAt = new HashMap<>();
     /** Warnings of the completed objects, located, in the order they were completed. */
     private final List<String> warnings = new ArrayList<>();
 
-    private SceneLoader(Path file) {
+    private SceneLoader(Path file, SceneOptions options) {
         this.file = file;
+        this.options = options;
     }
 
-    /** Loads and checks a scene; its name is the file name without ".xml". */
+    /**
+     * Loads and checks a scene by the running assignment's course conventions, its data paths
+     * starting from its folder; its name is the file name without ".xml".
+     */
     public static Scene load(Path file) {
-        return new SceneLoader(file).loadScene();
+        return load(file, SceneOptions.ofAssignment());
+    }
+
+    /** Loads and checks a scene as {@code options} say. */
+    public static Scene load(Path file, SceneOptions options) {
+        return new SceneLoader(file, options).loadScene();
     }
 
     private Scene loadScene() {
@@ -69,6 +85,9 @@ public final class SceneLoader {
         Scene scene = new Scene();
         scene.setName(SceneFiles.nameOf(file));
         setProperties(scene, null, root);
+        if (!otherCourse.isEmpty()) {
+            throw error(otherCourse.get(0), otherCourseProblem());
+        }
         try {
             scene.complete();
         } catch (IllegalArgumentException e) {
@@ -94,6 +113,12 @@ public final class SceneLoader {
             }
             Element property = (Element) node;
             Method setter = findSetter(target.getClass(), placement != null, property);
+            OnlyInCourse only = setter.getAnnotation(OnlyInCourse.class);
+            if (only != null && !only.value().equals(options.course.year)) {
+                otherCourse.add(property);
+                otherYear = only.value();
+                continue;
+            }
             Object receiver = setter.getDeclaringClass() == Placement.class ? placement : target;
             Object[] args = readArguments(property, setter);
             try {
@@ -133,6 +158,34 @@ public final class SceneLoader {
                 + (suggestion != null ? " (did you mean <" + suggestion + ">?)" : "")
                 + (known.isEmpty() ? "; expected no elements inside it (it has no properties)"
                         : "; expected one of " + String.join(", ", known)));
+    }
+
+    /**
+     * One line naming every element of another course's conventions and where each is: "<mirrorCoefficient>
+     * (lines 12 and 20) is in the course's 2019 conventions only, and this scene loads by 2017's; …".
+     */
+    private String otherCourseProblem() {
+        Map<String, List<Integer>> lines = new java.util.LinkedHashMap<>();
+        for (Element e : otherCourse) {
+            lines.computeIfAbsent(e.getTagName(), k -> new ArrayList<>()).add(PositionalXml.position(e)[0]);
+        }
+        List<String> parts = new ArrayList<>();
+        for (Map.Entry<String, List<Integer>> entry : lines.entrySet()) {
+            List<Integer> at = entry.getValue();
+            parts.add("<" + entry.getKey() + "> (line" + (at.size() == 1 ? " " + at.get(0) : "s " + joinAnd(at)) + ")");
+        }
+        return joinAnd(parts) + (parts.size() == 1 ? " is" : " are") + " in the course's " + otherYear
+                + " conventions only, and this scene loads by " + options.course.year + "'s; render it with --course "
+                + otherYear + " (or set course = " + otherYear + " in assignment.properties)";
+    }
+
+    private static String joinAnd(List<?> items) {
+        List<String> s = new ArrayList<>();
+        items.forEach(i -> s.add(String.valueOf(i)));
+        if (s.size() <= 1) {
+            return String.join("", s);
+        }
+        return String.join(", ", s.subList(0, s.size() - 1)) + " and " + s.get(s.size() - 1);
     }
 
     /**
@@ -193,7 +246,7 @@ public final class SceneLoader {
             // the file itself (empty, unreadable, bad lines) point into the file.
             if (!Files.exists(mesh)) {
                 throw error(property, "no such mesh file " + mesh + "; expected an OBJ file (a relative path in <"
-                        + property.getTagName() + "> starts from the scene file's folder)");
+                        + property.getTagName() + "> starts from " + startsFrom() + ")");
             }
             if (Files.isDirectory(mesh)) {
                 throw error(property, "the mesh path " + mesh + " is a folder; expected an OBJ file");
@@ -276,13 +329,42 @@ public final class SceneLoader {
         return n >= 2 && n <= 4 ? new String[] {"two", "three", "four"}[n - 2] : Integer.toString(n);
     }
 
+    /**
+     * A data path (a mesh, a texture image): against the scene root when one is given; otherwise beside
+     * the scene file, or, when it is not there, in the nearest folder above the scene's that has it, with
+     * a warning naming where. That is how the course's 2019 scenes, kept in sub-folders of one root,
+     * name their data ("../../meshes/bunny.obj" from the root), and they load as shipped.
+     */
     private Path resolve(Element property, String text) {
         String path = text.strip();
         if (path.isEmpty()) {
             throw error(property, "<" + property.getTagName() + "> is empty; expected a file path");
         }
+        if (options.sceneRoot != null) {
+            return options.sceneRoot.resolve(path).normalize();
+        }
         Path folder = file.toAbsolutePath().getParent();
-        return folder.resolve(path).normalize();
+        Path beside = folder.resolve(path).normalize();
+        if (Files.exists(beside) || Path.of(path).isAbsolute()) {
+            return beside;
+        }
+        for (Path above = folder.getParent(); above != null; above = above.getParent()) {
+            Path found = above.resolve(path).normalize();
+            if (Files.exists(found)) {
+                int[] position = PositionalXml.position(property);
+                warnings.add(SceneException.located(file, position[0], position[1], "warning: " + path
+                        + " is not there from the scene's folder; using " + found + ", from " + above
+                        + " (--scene-root DIR names the folder data paths start from)"));
+                return found;
+            }
+        }
+        return beside;
+    }
+
+    /** Where a relative data path starts, for messages about a file not found. */
+    private String startsFrom() {
+        return options.sceneRoot != null ? "the scene root " + options.sceneRoot + " (--scene-root)"
+                : "the scene file's folder, or the nearest folder above it that has the file";
     }
 
     private static boolean isObjectType(Class<?> t) {
@@ -432,6 +514,9 @@ public final class SceneLoader {
             }
             if (object instanceof Texture) {
                 ((Texture) object).complete();
+            }
+            if (object instanceof Shader) {
+                return ((Shader) object).forCourse(options.course);
             }
             return object;
         } catch (IllegalArgumentException e) {

@@ -13,16 +13,54 @@ import ray.math.Vec3;
  * or, when it has a {@code texture}, the texture's color at the hit, which replaces it.
  */
 public abstract class DirectLighting extends Shader {
-    private Vec3 diffuseColor = Vec3.ONE;
+    private Vec3 diffuseColor;
     private Texture texture;
+    private Vec3 mirrorCoefficient = Vec3.ZERO;
 
     public void setDiffuseColor(Vec3 diffuseColor) {
         this.diffuseColor = diffuseColor;
     }
 
+    /** The diffuse color given, or 1 1 1 (2017's default) when none was. */
     @Override
     public Vec3 getDiffuseColor() {
-        return diffuseColor;
+        return diffuseColor != null ? diffuseColor : Vec3.ONE;
+    }
+
+    /**
+     * The 2019 mirror coefficient k_m, each channel from 0 to 1: the weight of a mirror ray head on,
+     * which Schlick's approximation raises toward 1 at grazing angles. 2017 has no mirror term.
+     */
+    @OnlyInCourse("2019")
+    public void setMirrorCoefficient(Vec3 mirrorCoefficient) {
+        for (int axis = 0; axis < 3; axis++) {
+            double k = mirrorCoefficient.get(axis);
+            if (!(k >= 0 && k <= 1)) {
+                throw new IllegalArgumentException("mirrorCoefficient is " + mirrorCoefficient
+                        + "; expected three numbers from 0 to 1");
+            }
+        }
+        this.mirrorCoefficient = mirrorCoefficient;
+    }
+
+    public Vec3 getMirrorCoefficient() {
+        return mirrorCoefficient;
+    }
+
+    /** The BRDF this shader is under the 2019 conventions. */
+    protected abstract Brdf brdf2019();
+
+    /** The diffuse color under the 2019 conventions when the scene gives none. */
+    protected abstract Vec3 defaultDiffuseColor2019();
+
+    /** Under 2019, a {@link ReflectionShader} with this shader's BRDF, colors, texture and mirror coefficient. */
+    @Override
+    public Shader forCourse(Course course) {
+        if (course != Course.Y2019) {
+            return this;
+        }
+        return new ReflectionShader(toString(), brdf2019(), diffuseColor != null ? diffuseColor : defaultDiffuseColor2019(),
+                texture, mirrorCoefficient, getSpecularColor(), getExponent());
     }
 
     /** A texture whose color at each hit replaces the diffuse color. */
@@ -39,7 +77,7 @@ public abstract class DirectLighting extends Shader {
     /** kd at a hit: the texture's color there, or the diffuse color when there is no texture. */
     @Override
     public Vec3 diffuseColorAt(IntersectionRecord hit) {
-        return texture != null ? texture.colorAt(hit) : diffuseColor;
+        return texture != null ? texture.colorAt(hit) : getDiffuseColor();
     }
 
     /**

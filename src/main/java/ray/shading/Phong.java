@@ -6,8 +6,8 @@ import ray.math.Vec3;
 
 /**
  * Blinn–Phong: L = Σ (kd ⊙ I · max(0, n·l) + ks ⊙ I · max(0, n·h)^p) / r², with the half vector
- * h = normalize(l + e). As in the course's reference renderer, the specular term is not gated by n·l,
- * and a texture replaces kd only.
+ * h = normalize(l + e). As in the course's 2017 reference renderer, the specular term is not gated by n·l,
+ * and a texture replaces kd only. Under 2019's conventions it is {@link PhongBrdf} instead.
  */
 public class Phong extends DirectLighting {
     private Vec3 specularColor = Vec3.ONE;
@@ -40,6 +40,16 @@ public class Phong extends DirectLighting {
         Set<Effect> effects = EnumSet.copyOf(super.effects());
         effects.add(Effect.SPECULAR);
         return effects;
+    }
+
+    @Override
+    protected Brdf brdf2019() {
+        return new PhongBrdf(specularColor, exponent);
+    }
+
+    @Override
+    protected Vec3 defaultDiffuseColor2019() {
+        return Vec3.ONE;
     }
 
     @Override

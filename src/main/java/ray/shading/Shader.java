@@ -98,6 +98,20 @@ public abstract class Shader {
         return result;
     }
 
+    /** The course conventions this shader shades by: 2017's unless it is one of 2019's ({@link ReflectionShader}). */
+    public Course course() {
+        return Course.Y2017;
+    }
+
+    /**
+     * The shader a scene loaded under {@code course}'s conventions uses in this one's place, once its
+     * properties are set: itself, unless the course shades it another way (a Lambertian or Phong under
+     * 2019 becomes a {@link ReflectionShader} with that course's BRDF).
+     */
+    public Shader forCourse(Course course) {
+        return this;
+    }
+
     /** Unit vector from the hit toward where the ray came from. */
     protected static Vec3 towardEye(Ray ray) {
         return ray.direction.normalized().negate();
