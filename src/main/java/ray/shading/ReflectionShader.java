@@ -170,10 +170,12 @@ public final class ReflectionShader extends Shader {
             steps.row("n·v", steps.num(nv) + "   (≤ 0: seen from behind its normal, the surface is black)");
             return Vec3.ZERO;
         }
-        Vec3 lights = steps.lightByLight(this, hit, ray);
         if (!mirrors()) {
-            return lights;
+            return steps.lightByLight(this, hit, ray);
         }
+        // The lights' part alone: the same shader without its mirror term.
+        Vec3 lights = steps.lightByLight(new ReflectionShader(name, brdf, diffuseColor, texture, Vec3.ZERO, specularColor, exponent),
+                hit, ray);
         Vec3 weight = schlick(nv);
         steps.row("n·v", steps.num(nv));
         steps.row("R", steps.vec(weight) + "   (k_m = " + steps.vec(mirrorCoefficient) + ")");
