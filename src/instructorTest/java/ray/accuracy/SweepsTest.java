@@ -47,12 +47,12 @@ public class SweepsTest {
         List<String> names = new ArrayList<>();
         sweeps.forEach(s -> names.add(s.name));
         assertEquals("samples", names.get(0));
-        assertEquals(List.of("offsets", "acceleration"), names.subList(names.size() - 2, names.size()));
+        assertEquals(List.of("offsets", "depth", "acceleration"), names.subList(names.size() - 3, names.size()));
         List<String> expectedMissing = new ArrayList<>(Sweeps.ALL);
         expectedMissing.removeAll(names);
         assertEquals(expectedMissing, Sweeps.missing(sweeps));
         assertEquals(List.of("arithmetic", "intersection"),
-                Sweeps.missing(List.of(Sweeps.samples(List.of(1)), Sweeps.offsets(), Sweeps.acceleration())));
+                Sweeps.missing(List.of(Sweeps.samples(List.of(1)), Sweeps.offsets(), Sweeps.depth(), Sweeps.acceleration())));
     }
 
     @Test

@@ -14,6 +14,7 @@ import ray.render.RenderResult;
 import ray.render.Renderer;
 import ray.render.SamplePattern;
 import ray.scene.Scene;
+import ray.shading.Effect;
 
 /**
  * Renders one scene over every sweep and measures each setting: wall time (median of repeated
@@ -80,7 +81,12 @@ public final class AccuracyStudy {
     public SceneStudy study(Scene scene) {
         String name = scene.getName();
         double exposure = scene.getExposure();
-        List<Sweep> sweeps = Sweeps.available(samples);
+        List<Sweep> available = Sweeps.available(samples);
+        List<String> missing = Sweeps.missing(available);
+        // The depth sweep's settings differ only where mirror rays are traced.
+        boolean mirrors = RenderPlan.of(scene).runs(Effect.REFLECTION);
+        List<Sweep> sweeps = new ArrayList<>(available);
+        sweeps.removeIf(s -> s.name.equals("depth") && !mirrors);
         PixelWindow part = window;
         if (part == null) {
             Image preview = render(RenderPlan.of(scene)).image;
@@ -118,7 +124,7 @@ public final class AccuracyStudy {
             }
         }
         return new SceneStudy(name, scene.getWidth(), scene.getHeight(), exposure, scene.getSamples(), part,
-                referenceSamples, reference.seconds, reference.image, sweeps, Sweeps.missing(sweeps), results);
+                referenceSamples, reference.seconds, reference.image, sweeps, missing, results);
     }
 
     /** An untimed render on every core. */

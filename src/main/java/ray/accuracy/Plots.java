@@ -15,6 +15,7 @@ final class Plots {
         COLORS.put("arithmetic", "#d62728");
         COLORS.put("intersection", "#9467bd");
         COLORS.put("offsets", "#2ca02c");
+        COLORS.put("depth", "#8c564b");
         COLORS.put("acceleration", "#ff7f0e");
     }
 

@@ -118,6 +118,11 @@ public final class Reading {
             return text.append(anyDefect ? " The accelerated search must not change the image: this is a bug."
                     : " The same image either way: acceleration is time saved at no cost in accuracy.").toString();
         }
+        if (sweep.name.equals("depth")) {
+            return text.append(anyDefect ? " Each level of depth adds a ray only where the last one met a mirror, so the cost"
+                    + " grows slowly while the visible change shrinks: the depth past which no pixel changes is the one worth paying for."
+                    : " No pixel changes: the scene's mirrors do not see each other, so one bounce is enough here.").toString();
+        }
         text.append(anyDefect ? " The baseline is worth keeping: the cheaper-looking choices cost image quality here."
                 : " Here the choice does not show; the hard-case scenes are where it does.");
         return text.toString();
@@ -134,6 +139,8 @@ public final class Reading {
                 return "float's rounding: speckles, acne and lost silhouettes";
             case "acceleration":
                 return "a search that differs from the linear loop's";
+            case "depth":
+                return "reflections cut short: mirrors that show black where a deeper ray would bring back light";
             default:
                 return "differences from the baseline";
         }

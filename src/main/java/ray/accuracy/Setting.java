@@ -24,6 +24,8 @@ public final class Setting {
     public final Acceleration acceleration;
     /** Rewrites the scene's surface tree; null for the framework's own intersection code. */
     private final UnaryOperator<Surface> surfaces;
+    /** The most hits along a path of mirror rays ({@link RenderPlan#withPathHits}), or the shaders' own cap. */
+    private final int pathHits;
 
     private Setting(String label, int samples, SamplePattern pattern, RayOffsets offsets, UnaryOperator<Surface> surfaces) {
         this(label, samples, pattern, offsets, surfaces, Acceleration.BVH);
@@ -31,6 +33,12 @@ public final class Setting {
 
     private Setting(String label, int samples, SamplePattern pattern, RayOffsets offsets, UnaryOperator<Surface> surfaces,
             Acceleration acceleration) {
+        this(label, samples, pattern, offsets, surfaces, acceleration, RenderPlan.SHADERS_OWN_DEPTH);
+    }
+
+    private Setting(String label, int samples, SamplePattern pattern, RayOffsets offsets, UnaryOperator<Surface> surfaces,
+            Acceleration acceleration, int pathHits) {
+        this.pathHits = pathHits;
         this.label = label;
         this.samples = samples;
         this.pattern = pattern;
@@ -42,6 +50,11 @@ public final class Setting {
     /** The scene's own samples, searched as {@code mode} says (the image is the same; the time is not). */
     public static Setting acceleration(String label, Acceleration mode) {
         return new Setting(label, 0, SamplePattern.GRID, RayOffsets.SCALED, null, mode);
+    }
+
+    /** The scene's own samples with paths of mirror rays cut after {@code hits} hits. */
+    public static Setting pathHits(String label, int hits) {
+        return new Setting(label, 0, SamplePattern.GRID, RayOffsets.SCALED, null, Acceleration.BVH, hits);
     }
 
     /** The framework's choices at the scene's own samples, on the regular grid. */
@@ -70,7 +83,7 @@ public final class Setting {
 
     /** This setting with secondary rays started by {@code rule} instead, under another label. */
     public Setting withOffsets(String newLabel, RayOffsets rule) {
-        return new Setting(newLabel, samples, pattern, rule, surfaces, acceleration);
+        return new Setting(newLabel, samples, pattern, rule, surfaces, acceleration, pathHits);
     }
 
     /** The plan that renders {@code scene} with this setting (the whole image). */
@@ -79,7 +92,8 @@ public final class Setting {
         if (surfaces != null) {
             rendered = SceneCopy.withSurfaces(scene, surfaces.apply(scene.getSurfaces()));
         }
-        return RenderPlan.of(rendered, samples, pattern).withOffsets(offsets).withAcceleration(acceleration);
+        RenderPlan plan = RenderPlan.of(rendered, samples, pattern).withOffsets(offsets).withAcceleration(acceleration);
+        return pathHits == RenderPlan.SHADERS_OWN_DEPTH ? plan : plan.withPathHits(pathHits);
     }
 
     @Override

@@ -12,7 +12,9 @@ public final class Sweeps {
     /** The samples-per-pixel points of the study unless asked otherwise. */
     public static final List<Integer> SAMPLES = List.of(1, 4, 16, 64, 256);
     /** Every sweep the full study has, in report order. */
-    public static final List<String> ALL = List.of("samples", "arithmetic", "intersection", "offsets", "acceleration");
+    public static final List<String> ALL = List.of("samples", "arithmetic", "intersection", "offsets", "depth", "acceleration");
+    /** The deepest setting of the depth sweep, its baseline: the course's limit of 12 hits along a path. */
+    static final int DEEPEST = 12;
     /** The seed of the jittered points (the reference uses another, so its noise is independent). */
     static final long SEED = 1;
 
@@ -40,6 +42,21 @@ public final class Sweeps {
     }
 
     /**
+     * Paths of mirror rays cut after 12 hits (the course's limit, the baseline) and after 1 to 11:
+     * what each level of mirror reflection costs in rays and time, and what stopping early leaves
+     * out. Measured only on scenes that trace mirror rays.
+     */
+    public static Sweep depth() {
+        List<Setting> settings = new ArrayList<>();
+        settings.add(Setting.pathHits("depth " + DEEPEST, DEEPEST));
+        for (int hits = 1; hits < DEEPEST; hits++) {
+            settings.add(Setting.pathHits("depth " + hits, hits));
+        }
+        return new Sweep("depth", "How deep must mirror rays go: what does each bounce cost, and what does stopping early leave out?",
+                settings, true);
+    }
+
+    /**
      * The framework's BVH and any-hit shadow rays against plain linear loops: a cost dimension with
      * no accuracy in it (the images are identical), so its whole effect is in the time column.
      */
@@ -56,6 +73,7 @@ public final class Sweeps {
             sweeps.addAll(provider.sweeps());
         }
         sweeps.add(offsets());
+        sweeps.add(depth());
         sweeps.add(acceleration());
         sweeps.sort((a, b) -> Integer.compare(order(a.name), order(b.name)));
         return sweeps;

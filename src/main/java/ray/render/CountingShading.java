@@ -42,7 +42,7 @@ final class CountingShading extends SceneShading {
 
     private CountingShading(RenderPlan plan, SearchCounter counter, boolean recordKinds) {
         super(plan.scene(), plan.offsets(), plan.scene().getSurfaces().searchCopy(plan.acceleration(), counter),
-                plan.acceleration());
+                plan.acceleration(), plan.pathHits());
         this.counter = counter;
         this.recordKinds = recordKinds;
     }
@@ -85,7 +85,11 @@ final class CountingShading extends SceneShading {
             cameraKind = SurfaceKind.of(hit.surface);
             cameraHitPending = false;
         }
-        Set<Effect> shaderEffects = effects.computeIfAbsent(hit.surface.getShader(), Shader::allEffects);
+        Shader shader = hit.surface.getShader();
+        if (!shader.evaluatesAt(hit, ray)) {
+            return super.shade(hit, ray, depth);
+        }
+        Set<Effect> shaderEffects = effects.computeIfAbsent(shader, Shader::allEffects);
         int lights = lights().size();
         if (shaderEffects.contains(Effect.SPECULAR)) {
             stats.specular += lights;
@@ -105,6 +109,9 @@ final class CountingShading extends SceneShading {
 
     @Override
     public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
+        if (!withinDepth(depth)) {
+            return Vec3.ZERO;
+        }
         stats.reflection++;
         counter.searchingFor(SearchCounter.REFLECTION);
         return super.radiance(hit, direction, depth);

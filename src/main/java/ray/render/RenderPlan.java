@@ -31,6 +31,13 @@ public final class RenderPlan {
     private final long primitives;
     /** Where rays leaving a surface start: {@link RayOffsets#SCALED} unless a study of the alternatives asks otherwise. */
     private final RayOffsets offsets;
+    /**
+     * The most hits a path of mirror rays may have, the camera ray's included: {@link #SHADERS_OWN_DEPTH}
+     * (each shader's own cap) unless a study of what depth buys asks for fewer.
+     */
+    private final int pathHits;
+    /** {@link #pathHits} when no cap is asked for: the shaders' own (the course's 12 hits, a glaze's 12 bounces) apply. */
+    public static final int SHADERS_OWN_DEPTH = Integer.MAX_VALUE;
     /** The pixels rendered: the whole image unless a window of it is asked for. */
     private final PixelWindow window;
     /** How the framework's searches run: {@link Acceleration#BVH} unless {@code --accel none} asks otherwise. */
@@ -51,6 +58,7 @@ public final class RenderPlan {
         this.gridSide = Renderer.gridSide(samplesPerPixel);
         this.pattern = pattern;
         this.offsets = RayOffsets.SCALED;
+        this.pathHits = SHADERS_OWN_DEPTH;
         this.window = PixelWindow.whole(scene.getWidth(), scene.getHeight());
         this.acceleration = Acceleration.BVH;
         Walk walk = new Walk();
@@ -108,6 +116,11 @@ public final class RenderPlan {
 
     /** A copy of {@code plan} with other offsets or window; the effects stay those of the scene. */
     private RenderPlan(RenderPlan plan, RayOffsets offsets, PixelWindow window, Acceleration acceleration) {
+        this(plan, offsets, window, acceleration, plan.pathHits);
+    }
+
+    /** A copy of {@code plan} with other offsets, window, acceleration or depth; the effects stay those of the scene. */
+    private RenderPlan(RenderPlan plan, RayOffsets offsets, PixelWindow window, Acceleration acceleration, int pathHits) {
         this.written = plan.written;
         this.scene = plan.scene;
         this.gridSide = plan.gridSide;
@@ -118,6 +131,11 @@ public final class RenderPlan {
         this.offsets = offsets;
         this.window = window;
         this.acceleration = acceleration;
+        this.pathHits = pathHits;
+        if (pathHits != plan.pathHits && running.containsKey(Effect.REFLECTION)) {
+            String shaders = running.get(Effect.REFLECTION);
+            running.put(Effect.REFLECTION, shaders.substring(0, shaders.lastIndexOf(", depth ")) + ", depth " + pathHits);
+        }
         running.remove(Effect.ACCELERATION);
         if (acceleration == Acceleration.BVH && trees != null) {
             running.put(Effect.ACCELERATION, trees);
@@ -134,6 +152,7 @@ public final class RenderPlan {
         this.running.putAll(plan.running);
         this.trees = plan.trees;
         this.offsets = plan.offsets;
+        this.pathHits = plan.pathHits;
         this.window = plan.window;
         this.acceleration = plan.acceleration;
     }
@@ -161,6 +180,23 @@ public final class RenderPlan {
 
     public Acceleration acceleration() {
         return acceleration;
+    }
+
+    /**
+     * This plan with paths of mirror rays cut after {@code hits} hits (the camera ray's first): a
+     * mirror ray that would make hit {@code hits + 1} is not traced and brings back black, as the
+     * course's depth limit does at 12. For measuring what depth buys; renders use the shaders' own cap.
+     */
+    public RenderPlan withPathHits(int hits) {
+        if (hits < 1) {
+            throw new IllegalArgumentException("a path has at least its camera ray's hit; got " + hits);
+        }
+        return new RenderPlan(this, offsets, window, acceleration, hits);
+    }
+
+    /** The most hits a path may have, or {@link #SHADERS_OWN_DEPTH}. */
+    public int pathHits() {
+        return pathHits;
     }
 
     /**

@@ -25,6 +25,8 @@ public class SceneShading implements ShadingContext {
     private final Scene scene;
     private final Surface surfaces;
     private final RayOffsets offsets;
+    /** The most hits a path may have ({@link RenderPlan#pathHits}): a mirror ray past it is not traced. */
+    private final int pathHits;
     /** Whether shadow rays ask "anything in the way?" (stopping at the first blocker) or search for the closest hit. */
     private final boolean anyHitShadows;
     /** Scratch record for shadow tests, whose hit is never read. */
@@ -38,15 +40,16 @@ public class SceneShading implements ShadingContext {
     }
 
     public SceneShading(Scene scene, RayOffsets offsets) {
-        this(scene, offsets, scene.getSurfaces(), Acceleration.BVH);
+        this(scene, offsets, scene.getSurfaces(), Acceleration.BVH, RenderPlan.SHADERS_OWN_DEPTH);
     }
 
     /**
      * A shading context that searches {@code surfaces} (the scene's, or a counting copy, {@link Surface#searchCopy},
      * of them), with shadow rays as {@code acceleration} says.
      */
-    protected SceneShading(Scene scene, RayOffsets offsets, Surface surfaces, Acceleration acceleration) {
+    protected SceneShading(Scene scene, RayOffsets offsets, Surface surfaces, Acceleration acceleration, int pathHits) {
         this.scene = scene;
+        this.pathHits = pathHits;
         this.surfaces = surfaces;
         this.offsets = offsets;
         this.anyHitShadows = acceleration == Acceleration.BVH;
@@ -81,9 +84,14 @@ public class SceneShading implements ShadingContext {
         return anyHitShadows ? !surfaces.intersectsAny(shadowRay) : !surfaces.intersect(shadowHit, shadowRay);
     }
 
+    /** Whether a ray of recursion depth {@code depth} (0 for camera rays) may be traced: its hit would be number depth + 1. */
+    protected boolean withinDepth(int depth) {
+        return depth < pathHits;
+    }
+
     @Override
     public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
-        return radiance(reflectionRay(hit, direction), depth);
+        return withinDepth(depth) ? radiance(reflectionRay(hit, direction), depth) : Vec3.ZERO;
     }
 
     /** The shadow ray that {@link #unoccluded} traces from {@code hit} toward {@code lightPosition}. */

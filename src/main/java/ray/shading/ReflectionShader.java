@@ -113,15 +113,28 @@ public final class ReflectionShader extends Shader {
                 mirrorCoefficient.z + (1 - mirrorCoefficient.z) * m5);
     }
 
+    /**
+     * The back-face gate: whether the hit is seen from behind its shading normal (n·v ≤ 0, v toward
+     * the ray's origin), where 2019's shader returns black without evaluating anything.
+     */
+    public static boolean seenFromBehind(IntersectionRecord hit, Ray ray) {
+        return !(hit.normal.dot(towardEye(ray)) > 0);
+    }
+
+    @Override
+    public boolean evaluatesAt(IntersectionRecord hit, Ray ray) {
+        return !seenFromBehind(hit, ray);
+    }
+
     @Override
     public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
+        if (seenFromBehind(hit, ray)) {
+            return Vec3.ZERO; // the back-face gate: lights and mirror alike
+        }
         Vec3 d = ray.direction.normalized();
         Vec3 v = d.negate();
         Vec3 n = hit.normal;
         double nv = n.dot(v);
-        if (!(nv > 0)) {
-            return Vec3.ZERO; // the back-face gate: seen from behind its normal, a surface is black
-        }
         double r = 0, g = 0, b = 0;
         if (!context.lights().isEmpty()) {
             Vec3 rhoD = diffuseColorAt(hit);
@@ -130,11 +143,12 @@ public final class ReflectionShader extends Shader {
                 double r2 = toLight.lengthSquared();
                 Vec3 l = toLight.normalized();
                 double nl = n.dot(l);
-                // A light below the surface adds nothing and costs no shadow ray.
-                if (!(nl > 0) || !context.unoccluded(hit, light.getPosition())) {
+                // f is evaluated for every light (as the render counters count it), but a light below
+                // the surface, or one f gives nothing, adds nothing and costs no shadow ray.
+                Vec3 f = brdf.value(rhoD, n, l, v);
+                if (!(nl > 0) || f.x == 0 && f.y == 0 && f.z == 0 || !context.unoccluded(hit, light.getPosition())) {
                     continue;
                 }
-                Vec3 f = brdf.value(rhoD, n, l, v);
                 Vec3 intensity = light.getIntensity();
                 r += f.x * intensity.x * nl / r2;
                 g += f.y * intensity.y * nl / r2;

@@ -112,6 +112,15 @@ public abstract class Shader {
         return this;
     }
 
+    /**
+     * Whether shading {@code hit} evaluates this shader's terms at all (its lights, texture and
+     * highlight), for the render counters: true unless a rule makes the hit black first (2019's
+     * back-face gate).
+     */
+    public boolean evaluatesAt(IntersectionRecord hit, Ray ray) {
+        return true;
+    }
+
     /** Unit vector from the hit toward where the ray came from. */
     protected static Vec3 towardEye(Ray ray) {
         return ray.direction.normalized().negate();
