@@ -16,6 +16,7 @@ import ray.accuracy.SceneStudy;
 import ray.accuracy.Sweeps;
 import ray.render.PixelWindow;
 import ray.scene.Scene;
+import ray.scene.SceneOptions;
 
 /** {@code ray1 accuracy}: the accuracy–cost study of scenes, written as a report (DIR/index.html). */
 @Command(name = "accuracy", mixinStandardHelpOptions = true,
@@ -53,6 +54,7 @@ public final class AccuracyCommand extends ManyScenesCommand {
     @Override
     public Integer call() throws IOException {
         PixelWindow part = checkOptions();
+        SceneOptions sceneOptions = courseOptions.sceneOptions(spec.commandLine());
         PrintWriter out = out();
         PrintWriter err = err();
         if (!outputUsable(output, "write the report somewhere else, e.g. -o build/accuracy")) {
@@ -71,7 +73,7 @@ public final class AccuracyCommand extends ManyScenesCommand {
                 });
         List<SceneStudy> studies = new ArrayList<>();
         int failures = eachScene(files, file -> {
-            Scene scene = SceneWarnings.load(file, courseOptions.sceneOptions(spec.commandLine()), err);
+            Scene scene = SceneWarnings.load(file, sceneOptions, err);
             if (part != null && !part.fitsIn(scene.getWidth(), scene.getHeight())) {
                 err.println("error: " + file + ": the window " + part + " does not fit in its " + scene.getWidth() + "x"
                         + scene.getHeight() + " image");

@@ -20,6 +20,7 @@ import ray.render.SamplePattern;
 import ray.render.TaskProbes;
 import ray.scene.Scene;
 import ray.scene.SceneFiles;
+import ray.scene.SceneOptions;
 
 /**
  * {@code ray1 render}: renders scenes to PNG files, per scene a line of figures and a line of its
@@ -82,6 +83,7 @@ public final class RenderCommand extends ManyScenesCommand {
         OptionChecks.samples(spec.commandLine(), "--samples", samples);
         OptionChecks.atLeastOne(spec.commandLine(), "--threads", threads);
         ray.accel.Acceleration acceleration = OptionChecks.acceleration(spec.commandLine(), "--accel", accel);
+        SceneOptions sceneOptions = courseOptions.sceneOptions(spec.commandLine());
         PrintWriter out = out();
         PrintWriter err = err();
         Path folder = cameraRays ? output.resolve(CAMERA_RAYS_FOLDER) : output;
@@ -103,7 +105,7 @@ public final class RenderCommand extends ManyScenesCommand {
                 err.println("error: " + file + ": renders to " + folder.resolve(name + ".png") + ", as " + previous + " does; rename one");
                 return false;
             }
-            Scene scene = SceneWarnings.load(file, courseOptions.sceneOptions(spec.commandLine()), err);
+            Scene scene = SceneWarnings.load(file, sceneOptions, err);
             if (cameraRays) {
                 writeCameraRays(scene, folder.resolve(name + ".png"), name, out);
             } else {
