@@ -73,6 +73,21 @@ public class SceneLoaderCourseTest {
     }
 
     @Test
+    public void aSurfaceWithoutAShaderAndAGlazesDefaultSubstrateAreShadedByTheCourse() {
+        String xml = "<scene>\n" + SceneFixtures.CAMERA_AND_IMAGE + "  <surface type=\"Sphere\"/>\n"
+                + "  <surface type=\"Sphere\"><shader type=\"Glazed\"/></surface>\n</scene>\n";
+        Path file = SceneFixtures.write(folder, "plain.xml", xml);
+        List<Surface> y2019 = SceneLoader.load(file, options(Course.Y2019)).getSurfaces().children();
+        Shader plain = y2019.get(0).getShader();
+        assertTrue(plain instanceof ReflectionShader);
+        assertVec(v(1, 1, 1), plain.getDiffuseColor(), 0);
+        assertEquals(Course.Y2019, ((ray.shading.Glazed) y2019.get(1).getShader()).getSubstrate().course());
+        List<Surface> y2017 = SceneLoader.load(file, options(Course.Y2017)).getSurfaces().children();
+        assertTrue(y2017.get(0).getShader() instanceof Lambertian);
+        assertTrue(((ray.shading.Glazed) y2017.get(1).getShader()).getSubstrate() instanceof Lambertian);
+    }
+
+    @Test
     public void aMirrorCoefficientAboveOneIsRefusedWithItsLine() {
         Path file = SceneFixtures.write(folder, "bad.xml", "<scene>\n" + SceneFixtures.CAMERA_AND_IMAGE
                 + "  <shader type=\"Lambertian\">\n    <mirrorCoefficient>0 2 0</mirrorCoefficient>\n  </shader>\n</scene>\n");

@@ -6,6 +6,7 @@ import java.util.List;
 import ray.IntersectionRecord;
 import ray.camera.Camera;
 import ray.math.Vec3;
+import ray.shading.Course;
 import ray.shading.Lambertian;
 import ray.shading.Light;
 import ray.shading.Shader;
@@ -104,6 +105,14 @@ public class Scene {
 
     /** Checks that the scene can be rendered and gives a white Lambertian to every surface without a shader. */
     public void complete() {
+        complete(Course.Y2017);
+    }
+
+    /**
+     * As {@link #complete()}, the white Lambertian shaded by {@code course}'s conventions (under 2019
+     * a {@link ray.shading.ReflectionShader} with ρd = 1).
+     */
+    public void complete(Course course) {
         if (camera == null) {
             throw new IllegalArgumentException(
                     "the scene has no <camera>; expected a camera, e.g. <camera type=\"PerspectiveCamera\"/>");
@@ -111,7 +120,7 @@ public class Scene {
         if (width == 0) {
             throw new IllegalArgumentException("the scene has no <image> size; expected <image>width height</image>");
         }
-        ShaderInheritance.apply(surfaces, new Lambertian());
+        ShaderInheritance.apply(surfaces, new Lambertian(Vec3.ONE).forCourse(course));
     }
 
     /**

@@ -89,7 +89,7 @@ public final class SceneLoader {
             throw error(otherCourse.get(0), otherCourseProblem());
         }
         try {
-            scene.complete();
+            scene.complete(options.course);
         } catch (IllegalArgumentException e) {
             throw error(root, e.getMessage());
         }

@@ -36,6 +36,13 @@ public class Glazed extends Shader {
         return substrate;
     }
 
+    /** A glaze is ray1's own under either course; its substrate is shaded by the course's rules (its default too). */
+    @Override
+    public Shader forCourse(Course course) {
+        substrate = substrate.forCourse(course);
+        return this;
+    }
+
     @Override
     public Set<Effect> effects() {
         return EnumSet.of(Effect.REFLECTION);
