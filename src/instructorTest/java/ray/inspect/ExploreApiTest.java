@@ -141,6 +141,23 @@ public class ExploreApiTest {
         }
     }
 
+    /**
+     * Under the course's 2019 conventions the page shows 2019's terms: the center of
+     * scenes-2019/one-sphere-lambertian.xml meets the sphere head on at (0, 0, 1), its light 4 away
+     * straight ahead, so the diffuse term is ρd/π · 64 · 1/16.
+     */
+    @Test(timeout = 120_000)
+    public void under2019TheDiffuseTermIsRhoOverPi() throws Exception {
+        ray.scene.SceneOptions y2019 = ray.scene.SceneOptions.of(ray.shading.Course.Y2019, null);
+        try (Explorer explorer = Explorer.start(Path.of("scenes-2019/one-sphere-lambertian.xml"), null, 0, y2019)) {
+            JsonObject story = json(explorer, "api/trace?x=100&y=100", 200);
+            JsonObject light = story.getAsJsonArray("lights").get(0).getAsJsonObject();
+            assertEquals(1, light.get("nDotL").getAsDouble(), 1e-12);
+            double scale = 64.0 / 16 / Math.PI;
+            assertVec(new double[] {0.8 * scale, 0.5 * scale, 0.2 * scale}, light.getAsJsonArray("diffuse"), 1e-12);
+        }
+    }
+
     /** A pixel in a shadow: the blocked light names the blocker that ray1 trace names. */
     @Test(timeout = 120_000)
     public void aBlockedLightNamesTheBlockerTheTraceNames() throws Exception {
