@@ -32,16 +32,21 @@ import ray.shading.Course;
  * by the assignment's course; {@code References scenes-2019 2019} renders the 2019 scenes by 2019's conventions).
  */
 public final class References {
-    static final String README = "# Reference renders\n"
-            + "\n"
-            + "These images are made by `gradle references` (`ray.tools.References`), which renders every\n"
-            + "scene under `scenes/` at full size with the instructor's solution. Do not edit them by hand:\n"
-            + "change a scene, then run `gradle references` again and look at the images before committing.\n"
-            + "\n"
-            + "The render tests (`src/test/java/ray/endtoend`) compare your renders with these images;\n"
-            + "`docs/grading.md` explains how, and `ray1 diff` compares two images yourself.\n"
-            + "`ray1 render` refuses to write into this folder (it holds the marker file `"
-            + RenderCommand.REFERENCE_MARKER + "`).\n";
+    static final String README = readme("scenes", "gradle references", "");
+
+    /** The reference folder's README for the scenes under {@code folder}, rendered by {@code command}. */
+    static String readme(String folder, String command, String conventions) {
+        return "# Reference renders\n"
+                + "\n"
+                + "These images are made by `" + command + "` (`ray.tools.References`), which renders every\n"
+                + "scene under `" + folder + "/` at full size with the instructor's solution" + conventions + ". Do not edit them by hand:\n"
+                + "change a scene, then run `" + command + "` again and look at the images before committing.\n"
+                + "\n"
+                + "The render tests (`src/test/java/ray/endtoend`) compare your renders with these images;\n"
+                + "`docs/grading.md` explains how, and `ray1 diff` compares two images yourself.\n"
+                + "`ray1 render` refuses to write into this folder (it holds the marker file `"
+                + RenderCommand.REFERENCE_MARKER + "`).\n";
+    }
 
     private References() {
     }
@@ -77,7 +82,10 @@ public final class References {
         Files.writeString(reference.resolve(RenderCommand.REFERENCE_MARKER),
                 "Reference renders, made by gradle references. ray1 render does not write into this folder.\n",
                 StandardCharsets.UTF_8);
-        Files.writeString(reference.resolve("README.md"), README, StandardCharsets.UTF_8);
+        Files.writeString(reference.resolve("README.md"), options.course == Course.Y2017 ? README
+                : readme(scenes.toString().replace('\\', '/'), "gradle references" + options.course.year,
+                        ", by the course's " + options.course.year + " conventions (`ray1 render --course " + options.course.year + "`)"),
+                StandardCharsets.UTF_8);
         // Each scene's warnings go to stderr, as ray1 render prints them.
         PrintWriter warnings = new PrintWriter(System.err);
         for (Map.Entry<String, Path> entry : byName.entrySet()) {
