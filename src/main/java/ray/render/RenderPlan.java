@@ -49,6 +49,8 @@ public final class RenderPlan {
      * kept apart from {@link #running} so that a plan made without acceleration can be made with it again.
      */
     private final String trees;
+    /** How many shaders trace mirror rays ("2 shaders"), or null: the reflection entry adds the plan's depth ({@link #reflection}). */
+    private final String mirrorShaders;
 
     private RenderPlan(Scene scene, int samplesPerPixel, SamplePattern pattern) {
         // Every render runs in the camera's frame: the same image, with hit points as exact as the
@@ -77,8 +79,9 @@ public final class RenderPlan {
         if (walk.count(Effect.SPECULAR) > 0) {
             running.put(Effect.SPECULAR, count(walk.count(Effect.SPECULAR), "shader"));
         }
-        if (walk.count(Effect.REFLECTION) > 0) {
-            running.put(Effect.REFLECTION, count(walk.count(Effect.REFLECTION), "shader") + ", depth " + Glazed.MAX_DEPTH);
+        this.mirrorShaders = walk.count(Effect.REFLECTION) == 0 ? null : count(walk.count(Effect.REFLECTION), "shader");
+        if (mirrorShaders != null) {
+            running.put(Effect.REFLECTION, reflection());
         }
         if (gridSide > 1) {
             running.put(Effect.ANTIALIASING, gridSide + "x" + gridSide + (pattern.isJittered() ? " jittered" : ""));
@@ -132,9 +135,9 @@ public final class RenderPlan {
         this.window = window;
         this.acceleration = acceleration;
         this.pathHits = pathHits;
-        if (pathHits != plan.pathHits && running.containsKey(Effect.REFLECTION)) {
-            String shaders = running.get(Effect.REFLECTION);
-            running.put(Effect.REFLECTION, shaders.substring(0, shaders.lastIndexOf(", depth ")) + ", depth " + pathHits);
+        this.mirrorShaders = plan.mirrorShaders;
+        if (mirrorShaders != null) {
+            running.put(Effect.REFLECTION, reflection());
         }
         running.remove(Effect.ACCELERATION);
         if (acceleration == Acceleration.BVH && trees != null) {
@@ -153,6 +156,7 @@ public final class RenderPlan {
         this.trees = plan.trees;
         this.offsets = plan.offsets;
         this.pathHits = plan.pathHits;
+        this.mirrorShaders = plan.mirrorShaders;
         this.window = plan.window;
         this.acceleration = plan.acceleration;
     }
@@ -192,6 +196,11 @@ public final class RenderPlan {
             throw new IllegalArgumentException("a path has at least its camera ray's hit; got " + hits);
         }
         return new RenderPlan(this, offsets, window, acceleration, hits);
+    }
+
+    /** The reflection effect's entry: its shaders and the depth this plan lets paths reach ("2 shaders, depth 12"). */
+    private String reflection() {
+        return mirrorShaders + ", depth " + (pathHits == SHADERS_OWN_DEPTH ? Glazed.MAX_DEPTH : pathHits);
     }
 
     /** The most hits a path may have, or {@link #SHADERS_OWN_DEPTH}. */

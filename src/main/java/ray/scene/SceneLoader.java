@@ -179,6 +179,7 @@ public final class SceneLoader {
                 + otherYear + " (or set course = " + otherYear + " in assignment.properties)";
     }
 
+    /** "a", "a and b", "a, b and c". */
     private static String joinAnd(List<?> items) {
         List<String> s = new ArrayList<>();
         items.forEach(i -> s.add(String.valueOf(i)));
@@ -386,9 +387,7 @@ public final class SceneLoader {
             }
             if (!extras.isEmpty()) {
                 // "a type", "a type and properties", "a type, a name and properties".
-                String last = extras.remove(extras.size() - 1);
-                String listed = extras.isEmpty() ? last : String.join(", ", extras) + " and " + last;
-                throw error(element, "<" + element.getTagName() + " ref=\"" + excerpt(ref) + "\"> also has " + listed
+                throw error(element, "<" + element.getTagName() + " ref=\"" + excerpt(ref) + "\"> also has " + joinAnd(extras)
                         + "; expected the ref alone (it reuses the named object as it is)");
             }
             Object found = named.get(ref);
