@@ -15,10 +15,12 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
+import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import ray.assignment.Assignment;
 import ray.render.TaskProbes.Part;
 import ray.testing.StudentTask;
 import ray.variants.StubBuild;
@@ -35,12 +37,23 @@ public class TaskProbesTest {
     /** Each student file's handout stub, compiled alone into a class folder of its own. */
     private static final Map<Part, Path> STUB_CLASSES = new java.util.EnumMap<>(Part.class);
 
+    /** The preset that chooses every task of the table, so that every part is the students'. */
+    private static final String EVERY_TASK = "course-2017";
+    private static Assignment before;
+
     @BeforeClass
     public static void compileTheStubs() throws Exception {
+        before = Assignment.current();
+        Assignment.use(Assignment.preset(EVERY_TASK));
         for (Part part : Part.values()) {
             STUB_CLASSES.put(part, StubBuild.compile(Map.of(part.file, StubBuild.stubOf(part.file)),
                     FOLDER.getRoot().toPath().resolve("stub-" + part.className)));
         }
+    }
+
+    @AfterClass
+    public static void restoreTheAssignment() {
+        Assignment.use(before);
     }
 
     @Test
@@ -133,23 +146,25 @@ public class TaskProbesTest {
 
     @Test
     public void theLineNamesTheStubsAndWhereToStart() {
-        assertEquals("Still stubs: Task 1 (Camera rays), Task 2 (Sphere), Task 3 (Triangle), Task 4 (Group), Task 5 (Textures),"
-                + " Task 6 (Cylinder, extra credit). Start with Task 1: the TODO(Task 1) comments in"
+        // Numbered as course-2017 numbers them: cameras, group, sphere, lighting, triangle, textures, cylinder.
+        assertEquals("Still stubs: Task 1 (Camera rays), Task 2 (Group), Task 3 (Sphere), Task 4 (Lighting), Task 5 (Triangle),"
+                + " Task 6 (Textures), Task 7 (Cylinder, extra credit). Start with Task 1: the TODO(Task 1) comments in"
                 + " src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.allOf(Part.class)));
         // After the cameras, the table of tasks' order (pictures earliest) puts the group.
-        assertEquals("Still stubs: Task 2 (Sphere), Task 3 (Triangle), Task 4 (Group). Start with Task 4: the TODO(Task 4) comment in"
+        assertEquals("Still stubs: Task 2 (Group), Task 3 (Sphere), Task 5 (Triangle). Start with Task 2: the TODO(Task 2) comment in"
                 + " src/main/java/ray/surface/Group.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.SPHERE, Part.TRIANGLE, Part.GROUP)));
         // Half a task is named by its file.
-        assertEquals("Still stubs: Task 1 (OrthographicCamera), Task 5 (ClampTexture). Start with Task 1: the TODO(Task 1) comment in"
-                + " src/main/java/ray/camera/OrthographicCamera.java (see docs/assignment.md).",
-                TaskProbes.stillStubsLine(EnumSet.of(Part.ORTHOGRAPHIC_CAMERA, Part.CLAMP_TEXTURE)));
-        assertEquals("Still stubs: Task 5 (Textures), Task 6 (Cylinder, extra credit). Start with Task 5: the TODO(Task 5) comments in"
-                + " src/main/java/ray/shading/RepeatTexture.java and ClampTexture.java (see docs/assignment.md).",
-                TaskProbes.stillStubsLine(EnumSet.of(Part.REPEAT_TEXTURE, Part.CLAMP_TEXTURE, Part.CYLINDER)));
+        assertEquals("Still stubs: Task 1 (OrthographicCamera), Task 4 (Phong), Task 6 (ClampTexture). Start with Task 1: the TODO(Task 1)"
+                + " comment in src/main/java/ray/camera/OrthographicCamera.java (see docs/assignment.md).",
+                TaskProbes.stillStubsLine(EnumSet.of(Part.ORTHOGRAPHIC_CAMERA, Part.PHONG, Part.CLAMP_TEXTURE)));
+        // The light loops come after the sphere: without them every picture is black.
+        assertEquals("Still stubs: Task 4 (Lighting), Task 6 (Textures), Task 7 (Cylinder, extra credit). Start with Task 4: the TODO(Task 4)"
+                + " comments in src/main/java/ray/shading/Lambertian.java and Phong.java (see docs/assignment.md).",
+                TaskProbes.stillStubsLine(EnumSet.of(Part.LAMBERTIAN, Part.PHONG, Part.REPEAT_TEXTURE, Part.CLAMP_TEXTURE, Part.CYLINDER)));
         // The extra credit alone is offered, not prescribed.
-        assertEquals("Still a stub: Task 6 (Cylinder, extra credit). For the extra credit: the TODO(Task 6) comment in"
+        assertEquals("Still a stub: Task 7 (Cylinder, extra credit). For the extra credit: the TODO(Task 7) comment in"
                 + " src/main/java/ray/surface/Cylinder.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.CYLINDER)));
         for (Part part : Part.values()) {
@@ -166,7 +181,7 @@ public class TaskProbesTest {
 
     private static Set<String> stubsWith(List<Path> folders, long limitMillis) throws Exception {
         try (URLClassLoader loader = StubBuild.loader(folders)) {
-            Class<?> probes = loader.loadClass(TaskProbes.class.getName());
+            Class<?> probes = probesUnderEveryTask(loader);
             assertFalse("the loader gave this JVM's TaskProbes", probes == TaskProbes.class);
             Set<?> stubs = (Set<?>) probes.getMethod("stubs", long.class).invoke(null, limitMillis);
             return stubs.stream().map(p -> ((Enum<?>) p).name()).collect(Collectors.toCollection(TreeSet::new));
@@ -176,10 +191,17 @@ public class TaskProbesTest {
     /** The line {@code ray1 render} ends with when {@code folders}' classes replace the solution's, or null. */
     private static String lineWith(List<Path> folders) throws Exception {
         try (URLClassLoader loader = StubBuild.loader(folders)) {
-            Class<?> probes = loader.loadClass(TaskProbes.class.getName());
+            Class<?> probes = probesUnderEveryTask(loader);
             Object stubs = probes.getMethod("stubs").invoke(null);
             return (String) probes.getMethod("stillStubsLine", Set.class).invoke(null, stubs);
         }
+    }
+
+    /** The loader's TaskProbes, its assignment set to {@link #EVERY_TASK} as this JVM's is. */
+    private static Class<?> probesUnderEveryTask(URLClassLoader loader) throws Exception {
+        Class<?> assignment = loader.loadClass(Assignment.class.getName());
+        assignment.getMethod("use", assignment).invoke(null, assignment.getMethod("preset", String.class).invoke(null, EVERY_TASK));
+        return loader.loadClass(TaskProbes.class.getName());
     }
 
     private static Set<Part> partsNamed(Set<String> names) {
@@ -189,7 +211,7 @@ public class TaskProbesTest {
     }
 
     private static Object probe(URLClassLoader loader, String part) throws Exception {
-        Class<?> probes = loader.loadClass(TaskProbes.class.getName());
+        Class<?> probes = probesUnderEveryTask(loader);
         Class<?> parts = loader.loadClass(Part.class.getName());
         Object value = Arrays.stream(parts.getEnumConstants()).filter(p -> ((Enum<?>) p).name().equals(part)).findFirst().orElseThrow();
         return probes.getMethod("probe", parts).invoke(null, value);

@@ -19,7 +19,12 @@ import ray.camera.PerspectiveCamera;
 import ray.image.Image;
 import ray.math.Vec3;
 import ray.shading.ClampTexture;
+import ray.shading.DirectLighting;
+import ray.shading.Lambertian;
+import ray.shading.Light;
+import ray.shading.Phong;
 import ray.shading.RepeatTexture;
+import ray.shading.ShadingContext;
 import ray.shading.Texture;
 import ray.surface.Cylinder;
 import ray.surface.Group;
@@ -54,6 +59,8 @@ public final class TaskProbes {
         GROUP("Group"),
         REPEAT_TEXTURE("RepeatTexture"),
         CLAMP_TEXTURE("ClampTexture"),
+        LAMBERTIAN("Lambertian"),
+        PHONG("Phong"),
         CYLINDER("Cylinder");
 
         /** Its task's id in the table. */
@@ -127,6 +134,15 @@ public final class TaskProbes {
                     return texture(ClampTexture::new);
                 case CYLINDER:
                     return cylinder();
+                case LAMBERTIAN:
+                    // kd ⊙ I · (n·l) / r² = (0.5, 0.25, 1) · 4 · 1 / 4.
+                    return lighting(new Lambertian(), new Vec3(0.5, 0.25, 1));
+                case PHONG:
+                    // (kd · (n·l) + ks · (n·h)^p) ⊙ I / r², with l = e = h = n: kd + ks.
+                    Phong phong = new Phong();
+                    phong.setSpecularColor(new Vec3(1, 1, 1));
+                    phong.setExponent(10);
+                    return lighting(phong, new Vec3(1.5, 1.25, 2));
                 default:
                     throw new AssertionError(part);
             }
@@ -378,6 +394,54 @@ public final class TaskProbes {
             }
         }
         return new Finding(stub, problem);
+    }
+
+    /**
+     * A point at the origin facing +z, seen from straight above, under one light of intensity 4 at
+     * distance 2 straight above it, with nothing in the way: the shader (kd = (0.5, 0.25, 1)) must
+     * return {@code expected}. The stub returns black, here and with the light moved aside.
+     */
+    private static Finding lighting(DirectLighting shader, Vec3 expected) {
+        String name = shader.getClass().getSimpleName() + ".shade";
+        shader.setDiffuseColor(new Vec3(0.5, 0.25, 1));
+        shader.complete();
+        IntersectionRecord hit = new IntersectionRecord();
+        hit.t = 2;
+        hit.location = Vec3.ZERO;
+        hit.normal = new Vec3(0, 0, 1);
+        Ray ray = new Ray(new Vec3(0, 0, 2), new Vec3(0, 0, -1));
+        Vec3 above = shader.shade(hit, ray, unblocked(new Light(new Vec3(0, 0, 2), new Vec3(4, 4, 4))), 0);
+        Vec3 aside = shader.shade(hit, ray, unblocked(new Light(new Vec3(1, 0, 1), new Vec3(2, 2, 2))), 0);
+        boolean stub = isBlack(above) && isBlack(aside);
+        String problem = above != null && close(above, expected) ? null
+                : name + " returned " + above + " for a point facing a light of intensity (4, 4, 4) straight above it at distance 2 (kd = "
+                        + "(0.5, 0.25, 1)" + (shader instanceof Phong ? ", ks = (1, 1, 1), p = 10, seen from straight above" : "")
+                        + ", nothing in the way); expected " + expected;
+        return new Finding(stub, problem);
+    }
+
+    private static boolean isBlack(Vec3 color) {
+        return color != null && color.x == 0 && color.y == 0 && color.z == 0;
+    }
+
+    /** One light, nothing in the way of it, no mirror rays. */
+    private static ShadingContext unblocked(Light light) {
+        return new ShadingContext() {
+            @Override
+            public List<Light> lights() {
+                return List.of(light);
+            }
+
+            @Override
+            public boolean unoccluded(IntersectionRecord hit, Vec3 lightPosition) {
+                return true;
+            }
+
+            @Override
+            public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
+                return Vec3.ZERO;
+            }
+        };
     }
 
     private static boolean close(Vec3 a, Vec3 b) {

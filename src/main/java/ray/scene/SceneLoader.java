@@ -515,6 +515,7 @@ public final class SceneLoader {
                 ((Texture) object).complete();
             }
             if (object instanceof Shader) {
+                ((Shader) object).complete();
                 return ((Shader) object).forCourse(options.course);
             }
             return object;

@@ -7,10 +7,12 @@ import ray.Ray;
 import ray.math.Vec3;
 
 /**
- * Shaders lit by point lights: L = Σ over unshadowed lights of I ⊙ f(kd, n, l, e) / r², where l is
- * the unit vector to the light, r the distance to it and e the unit vector toward the eye.
- * Subclasses give f, the reflectance term. The diffuse color kd is the shader's {@code diffuseColor},
- * or, when it has a {@code texture}, the texture's color at the hit, which replaces it.
+ * What the framework keeps of a shader lit by point lights (a Lambertian's or a Phong's colors, its
+ * texture and its 2019 mirror coefficient): L = Σ over unshadowed lights of I ⊙ f(kd, n, l, e) / r²,
+ * where l is the unit vector to the light, r the distance to it and e the unit vector toward the eye.
+ * The light loop itself, {@code shade}, is in the classes students open ({@link Lambertian},
+ * {@link Phong}). The diffuse color kd is the shader's {@code diffuseColor}, or, when it has a
+ * {@code texture}, the texture's color at the hit, which replaces it.
  */
 public abstract class DirectLighting extends Shader {
     private Vec3 diffuseColor;
@@ -80,12 +82,6 @@ public abstract class DirectLighting extends Shader {
         return texture != null ? texture.colorAt(hit) : getDiffuseColor();
     }
 
-    /**
-     * The light-independent factor f(kd, n, l, e) that multiplies I/r², for the diffuse color kd;
-     * zero means the light cannot add anything.
-     */
-    protected abstract Vec3 reflectance(Vec3 kd, Vec3 normal, Vec3 toLight, Vec3 toEye);
-
     @Override
     public Set<Effect> effects() {
         Set<Effect> effects = EnumSet.of(Effect.LIGHTING, Effect.SHADOWS);
@@ -93,30 +89,6 @@ public abstract class DirectLighting extends Shader {
             effects.add(Effect.TEXTURES);
         }
         return effects;
-    }
-
-    @Override
-    public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
-        if (context.lights().isEmpty()) {
-            return Vec3.ZERO; // no light, no texture lookup (the sum below would be zero)
-        }
-        Vec3 toEye = towardEye(ray);
-        Vec3 kd = diffuseColorAt(hit);
-        double r = 0, g = 0, b = 0;
-        for (Light light : context.lights()) {
-            Vec3 toLightVector = light.getPosition().minus(hit.location);
-            double distanceSquared = toLightVector.lengthSquared();
-            Vec3 f = reflectance(kd, hit.normal, toLightVector.normalized(), toEye);
-            // A light whose unshadowed contribution is zero costs no shadow ray.
-            if (f.x == 0 && f.y == 0 && f.z == 0 || !context.unoccluded(hit, light.getPosition())) {
-                continue;
-            }
-            Vec3 intensity = light.getIntensity();
-            r += f.x * intensity.x / distanceSquared;
-            g += f.y * intensity.y / distanceSquared;
-            b += f.z * intensity.z / distanceSquared;
-        }
-        return new Vec3(r, g, b);
     }
 
     @Override

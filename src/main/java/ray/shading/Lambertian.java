@@ -1,9 +1,14 @@
 package ray.shading;
 
+import ray.IntersectionRecord;
+import ray.Ray;
 import ray.math.Vec3;
 
-/** A matte surface: L = Σ kd ⊙ I · max(0, n·l) / r² (2017); under 2019's conventions f = ρd/π ({@link LambertianBrdf}). */
-public class Lambertian extends DirectLighting {
+/**
+ * A matte surface lit by the scene's point lights: each light it sees adds kd ⊙ I · max(0, n·l) / r².
+ * Its diffuse color kd (or texture) is kept by LambertianShader.
+ */
+public class Lambertian extends LambertianShader {
 
     public Lambertian() {
     }
@@ -13,18 +18,50 @@ public class Lambertian extends DirectLighting {
     }
 
     @Override
-    protected Brdf brdf2019() {
-        return new LambertianBrdf();
-    }
-
-    /** The course's 2019 code left a Lambertian without a diffuse color 0.2 gray. */
-    @Override
-    protected Vec3 defaultDiffuseColor2019() {
-        return new Vec3(0.2, 0.2, 0.2);
-    }
-
-    @Override
-    protected Vec3 reflectance(Vec3 kd, Vec3 normal, Vec3 toLight, Vec3 toEye) {
-        return kd.times(Math.max(0, normal.dot(toLight)));
+    public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
+        // TODO(Task 7): return the light this matte surface sends back along the ray from the hit.
+        //   Return the light that leaves the hit toward the ray's origin: the sum, over the scene's lights
+        //   that reach the hit, of the light's intensity times the surface's diffuse color times how
+        //   squarely the light falls on the surface, falling off with the square of the distance.
+        //   Conventions (the reference images depend on them):
+        //   - The lights are context.lights(); a light counts only if context.unoccluded(hit, its position)
+        //     says nothing blocks the way to it (that helper traces the shadow ray, offset off the surface).
+        //   - The diffuse color at the hit is diffuseColorAt(hit) (a texture's color there, if the shader
+        //     has one); the colors multiply channel by channel; a light behind the surface adds nothing.
+        //   - hit.normal is unit length; hit.location is the point; the light's intensity is its
+        //     getIntensity() at distance 1.
+        // HINTS steps
+        //   1) Look up the diffuse color at the hit once.
+        //   2) For each light: find the vector from the hit to the light, its length squared, and the unit
+        //      vector along it.
+        //   3) Skip the light when the cosine between the normal and that unit vector is not positive, or
+        //      when the shadow test says the light is blocked.
+        //   4) Add the diffuse color times the light's intensity times the cosine, divided by the squared
+        //      distance, and return the sum.
+        // HINTS formulas
+        //   1) kd = diffuseColorAt(hit).
+        //   2) For each light: toLight = light.getPosition() − hit.location, r² = toLight.lengthSquared(),
+        //      l = toLight.normalized().
+        //   3) With n·l = hit.normal.dot(l): skip the light when n·l ≤ 0, or when
+        //      !context.unoccluded(hit, light.getPosition()) (testing the cosine first saves a shadow ray).
+        //   4) L += kd ⊙ I · (n·l) / r², with I = light.getIntensity() and ⊙ channel by channel
+        //      (Vec3.times(Vec3)); return L, which starts at Vec3.ZERO.
+        // END HINTS
+        // BEGIN SOLUTION
+        Vec3 kd = diffuseColorAt(hit);
+        Vec3 sum = Vec3.ZERO;
+        for (Light light : context.lights()) {
+            Vec3 toLight = light.getPosition().minus(hit.location);
+            double distanceSquared = toLight.lengthSquared();
+            double cosine = hit.normal.dot(toLight.normalized());
+            // A light behind the surface adds nothing, so it costs no shadow ray.
+            if (cosine <= 0 || !context.unoccluded(hit, light.getPosition())) {
+                continue;
+            }
+            sum = sum.plus(kd.times(light.getIntensity()).times(cosine / distanceSquared));
+        }
+        return sum;
+        // END SOLUTION
+        // STUB: return Vec3.ZERO;
     }
 }

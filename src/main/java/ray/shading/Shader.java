@@ -18,6 +18,13 @@ public abstract class Shader {
      */
     public abstract Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth);
 
+    /**
+     * Checks the shader once the scene has set its properties; the loader calls it. Nothing to check
+     * by default (a shader's setters refuse bad values themselves).
+     */
+    public void complete() {
+    }
+
     // What ray1 trace and the explore page show of a shader: each says its own, null where it has none,
     // so the inspection code needs no list of shader types.
 

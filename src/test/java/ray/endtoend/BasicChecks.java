@@ -32,16 +32,21 @@ final class BasicChecks {
 
     /**
      * The tasks of this assignment whose code renders {@code scene}, in their order: the camera and
-     * the group always, and each primitive or texture it holds (a task the assignment does not choose
-     * ships solved, and is never to blame).
+     * the group always, each primitive or texture it holds, and the light loops when it is lit (a
+     * task the assignment does not choose ships solved, and is never to blame).
      */
     static Set<StudentTask> tasksOf(Scene scene) {
         Set<String> ids = new HashSet<>(Set.of("camera-rays", "group"));
         addTasksOf(scene.getSurfaces(), ids);
         // Texture lookups, as the renderer's plan counts them: a lit shader with a texture on any
         // surface, named in the scene or written inline in the shader.
-        if (RenderPlan.of(scene).runs(Effect.TEXTURES)) {
+        RenderPlan plan = RenderPlan.of(scene);
+        if (plan.runs(Effect.TEXTURES)) {
             ids.add("textures");
+        }
+        // The light loops of the Lambertian and Phong shaders, which run when the scene has a light.
+        if (plan.runs(Effect.LIGHTING)) {
+            ids.add("lighting");
         }
         Set<StudentTask> tasks = new LinkedHashSet<>();
         for (StudentTask task : StudentTask.values()) {

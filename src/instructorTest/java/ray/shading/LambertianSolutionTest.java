@@ -9,8 +9,11 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 
-/** Lambertian shading, L = Σ kd ⊙ I · max(0, n·l) / r², against hand-computed values. */
-public class LambertianTest {
+/**
+ * The solution's Lambertian shading, L = Σ kd ⊙ I · max(0, n·l) / r², against hand-computed values
+ * (instructor-only: the students' own tests are ray.shading.LambertianTest and the hidden ones).
+ */
+public class LambertianSolutionTest {
     private static final double TOL = 1e-12;
 
     private final IntersectionRecord hit = FakeShadingContext.hit(Vec3.ZERO, v(0, 0, 1));

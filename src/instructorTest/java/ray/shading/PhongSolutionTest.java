@@ -11,9 +11,11 @@ import ray.math.Vec3;
 
 /**
  * Blinn–Phong, L = Σ (kd ⊙ I · max(0, n·l) + ks ⊙ I · max(0, n·h)^p) / r² with h = normalize(l + e),
- * including the course's convention that the specular term is not gated by n·l.
+ * including the course's convention that the specular term is not gated by n·l. Instructor-only: it also
+ * pins the solution's shadow rays (none for a light that adds nothing), which the render counters
+ * rely on and students may do otherwise; their tests are ray.shading.PhongTest and the hidden ones.
  */
-public class PhongTest {
+public class PhongSolutionTest {
     private static final double TOL = 1e-12;
 
     private final IntersectionRecord hit = FakeShadingContext.hit(Vec3.ZERO, v(0, 0, 1));
