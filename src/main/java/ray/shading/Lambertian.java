@@ -29,20 +29,20 @@ public class Lambertian extends LambertianShader {
         //   - The diffuse color at the hit is diffuseColorAt(hit) (a texture's color there, if the shader
         //     has one); the colors multiply channel by channel; a light behind the surface adds nothing.
         //   - hit.normal is unit length; hit.location is the point; the light's intensity is its
-        //     getIntensity() at distance 1.
+        //     getIntensity() at distance 1; a light exactly at the point has no direction and adds nothing.
         // HINTS steps
         //   1) Look up the diffuse color at the hit once.
         //   2) For each light: find the vector from the hit to the light, its length squared, and the unit
         //      vector along it.
-        //   3) Skip the light when the cosine between the normal and that unit vector is not positive, or
-        //      when the shadow test says the light is blocked.
+        //   3) Skip the light when it is at the point itself, when the cosine between the normal and that
+        //      unit vector is not positive, or when the shadow test says the light is blocked.
         //   4) Add the diffuse color times the light's intensity times the cosine, divided by the squared
         //      distance, and return the sum.
         // HINTS formulas
         //   1) kd = diffuseColorAt(hit).
         //   2) For each light: toLight = light.getPosition() − hit.location, r² = toLight.lengthSquared(),
         //      l = toLight.normalized().
-        //   3) With n·l = hit.normal.dot(l): skip the light when n·l ≤ 0, or when
+        //   3) With n·l = hit.normal.dot(l): skip the light when r² = 0, when n·l ≤ 0, or when
         //      !context.unoccluded(hit, light.getPosition()) (testing the cosine first saves a shadow ray).
         //   4) L += kd ⊙ I · (n·l) / r², with I = light.getIntensity() and ⊙ channel by channel
         //      (Vec3.times(Vec3)); return L, which starts at Vec3.ZERO.
@@ -53,6 +53,9 @@ public class Lambertian extends LambertianShader {
         for (Light light : context.lights()) {
             Vec3 toLight = light.getPosition().minus(hit.location);
             double distanceSquared = toLight.lengthSquared();
+            if (distanceSquared == 0) {
+                continue; // a light at the point itself: no direction to it
+            }
             double cosine = hit.normal.dot(toLight.normalized());
             // A light behind the surface adds nothing, so it costs no shadow ray.
             if (cosine <= 0 || !context.unoccluded(hit, light.getPosition())) {

@@ -30,15 +30,16 @@ public class Phong extends PhongShader {
         //   - The diffuse term counts only where the light is in front of the surface; the highlight is
         //     not cut off there, as in the course's reference renderer (a light just behind the surface
         //     can still add a highlight); neither term is ever negative.
-        //   - The eye is back along the ray (ray.direction need not be unit length); hit.normal is unit length.
+        //   - The eye is back along the ray (ray.direction need not be unit length); hit.normal is unit length;
+        //     a light exactly at the point has no direction and adds nothing.
         // HINTS steps
         //   1) Look up the diffuse color at the hit once, and find the unit vector from the hit toward the eye.
         //   2) For each light: find the vector from the hit to the light, its length squared, and the unit
         //      vector along it; the half vector is the unit vector along the sum of that and the eye vector.
         //   3) The diffuse factor is the cosine between the normal and the light vector, and the highlight
         //      factor the cosine between the normal and the half vector raised to the exponent, each taken
-        //      as zero when negative. Skip the light when both are zero, or when the shadow test says
-        //      the light is blocked.
+        //      as zero when negative. Skip the light when it is at the point itself, when both factors
+        //      are zero, or when the shadow test says the light is blocked.
         //   4) Add (the diffuse color times the diffuse factor plus the specular color times the highlight
         //      factor) times the light's intensity, divided by the squared distance; return the sum.
         // HINTS formulas
@@ -46,7 +47,7 @@ public class Phong extends PhongShader {
         //   2) For each light: toLight = light.getPosition() − hit.location, r² = toLight.lengthSquared(),
         //      l = toLight.normalized(), h = l.plus(e).normalized().
         //   3) diffuse = max(0, n·l) and specular = max(0, n·h)^p, with n = hit.normal and
-        //      p = getExponent() (Math.pow). Skip the light when both are 0, or when
+        //      p = getExponent() (Math.pow). Skip the light when r² = 0, when both are 0, or when
         //      !context.unoccluded(hit, light.getPosition()) (testing the factors first saves a shadow ray).
         //   4) L += (kd · diffuse + ks · specular) ⊙ I / r², with ks = getSpecularColor(),
         //      I = light.getIntensity() and ⊙ channel by channel (Vec3.times(Vec3)); L starts at Vec3.ZERO.
@@ -59,6 +60,9 @@ public class Phong extends PhongShader {
         for (Light light : context.lights()) {
             Vec3 toLight = light.getPosition().minus(hit.location);
             double distanceSquared = toLight.lengthSquared();
+            if (distanceSquared == 0) {
+                continue; // a light at the point itself: no direction to it
+            }
             Vec3 l = toLight.normalized();
             Vec3 half = l.plus(toEye).normalized();
             double diffuse = Math.max(0, hit.normal.dot(l));

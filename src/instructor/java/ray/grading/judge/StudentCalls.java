@@ -1,5 +1,8 @@
 package ray.grading.judge;
 
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
@@ -9,6 +12,9 @@ import ray.grading.wire.ThrownData;
 import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.math.Vec3;
+import ray.shading.Light;
+import ray.shading.Shader;
+import ray.shading.ShadingContext;
 import ray.shading.Texture;
 import ray.surface.Surface;
 
@@ -116,6 +122,67 @@ public final class StudentCalls {
         });
         outcome.rethrow(self);
         return outcome.value;
+    }
+
+    /** The student's shade calls running on each thread, the innermost last: the contexts the worker's callbacks ask. */
+    private static final ThreadLocal<Deque<ShadeCall>> SHADING = ThreadLocal.withInitial(ArrayDeque::new);
+
+    /** One shade call the worker is running: the renderer's (or the test's) context, and the hit it was given. */
+    static final class ShadeCall {
+        final ShadingContext context;
+        final IntersectionRecord hit;
+
+        ShadeCall(ShadingContext context, IntersectionRecord hit) {
+            this.context = context;
+            this.hit = hit;
+        }
+    }
+
+    /** The innermost shade call running on this thread, or null. */
+    static ShadeCall shading() {
+        return SHADING.get().peekLast();
+    }
+
+    /**
+     * The student's {@code shade(hit, ray, context, depth)} on {@code self}'s twin, asked at once (in a
+     * computation too: its shadow tests and mirror rays are the judge's to trace, as the worker asks
+     * them, so no answer can be guessed ahead). The lights go along as data, and the shader's texture
+     * color at the hit, looked up here, so that the student's shading is judged with the solution's
+     * texture; the context's shadow tests and mirror rays come back as callbacks
+     * ({@link Worker#serveShading}), which may shade again (a mirror ray that meets another of the
+     * student's shaders: a call inside this one).
+     */
+    public static Vec3 shade(Shader self, IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
+        Worker worker = Worker.get();
+        Vec3 textureColor = self.getTexture() != null ? self.diffuseColorAt(hit) : null;
+        List<Light> lights = context.lights();
+        Deque<ShadeCall> calls = SHADING.get();
+        calls.addLast(new ShadeCall(context, hit));
+        Outcome outcome;
+        try {
+            outcome = worker.call(m -> {
+                m.body.u8(Protocol.OP_SHADE);
+                m.target((StandIn) self);
+                Records.write(m.body, hit, m);
+                Records.writeRay(m.body, ray);
+                m.body.i32(depth).i32(lights.size());
+                for (Light light : lights) {
+                    m.body.vec(light.getPosition()).vec(light.getIntensity());
+                }
+                m.body.vec(textureColor);
+            }, in -> {
+                int status = in.u8();
+                if (status == Protocol.THREW) {
+                    return Outcome.threw(ThrownData.read(in));
+                }
+                expect(status);
+                return Outcome.value(in.vec());
+            });
+        } finally {
+            calls.removeLast();
+        }
+        outcome.rethrow(self);
+        return (Vec3) outcome.value;
     }
 
     private static void expect(int status) {

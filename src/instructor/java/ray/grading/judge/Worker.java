@@ -15,6 +15,7 @@ import ray.grading.wire.ThrownData;
 import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
+import ray.math.Vec3;
 import ray.surface.Surface;
 
 /**
@@ -206,8 +207,67 @@ final class Worker {
         }
     }
 
-    /** Runs the judge-side surface the student's code called and sends back what it did. */
+    /** Answers what the student's code asked of the judge's side during a call: a surface's intersect, or a shading context's. */
     private void serveCallback(WireIn in) {
+        int kind = in.u8();
+        switch (kind) {
+            case Protocol.CB_INTERSECT:
+                serveIntersect(in);
+                break;
+            case Protocol.CB_UNOCCLUDED:
+            case Protocol.CB_RADIANCE:
+                serveShading(kind, in);
+                break;
+            default:
+                throw new WireError("a callback of kind " + kind);
+        }
+    }
+
+    /**
+     * Runs the shadow test or traces the mirror ray that the student's shade asked its context for,
+     * with the context of the shade call running ({@link StudentCalls#shading}), and sends back the
+     * answer. A hit the student's code passes is the one the call gave when the worker says so (then
+     * the judge's own record, with whatever the student's code changed in it), else a record of its own.
+     */
+    void serveShading(int kind, WireIn in) {
+        StudentCalls.ShadeCall call = StudentCalls.shading();
+        if (call == null) {
+            throw new WireError("a shading callback outside a shade call");
+        }
+        boolean given = in.bool();
+        IntersectionRecord hit = given ? call.hit : new IntersectionRecord();
+        Records.read(in, hit, objects.reader());
+        Vec3 vector = in.vec();
+        int depth = kind == Protocol.CB_RADIANCE ? in.i32() : 0;
+        in.end();
+        JudgeObjects.Message reply = objects.new Message();
+        boolean unoccluded = false;
+        Vec3 radiance = null;
+        try {
+            if (kind == Protocol.CB_UNOCCLUDED) {
+                unoccluded = call.context.unoccluded(hit, vector);
+            } else {
+                radiance = call.context.radiance(hit, vector, depth);
+            }
+        } catch (WorkerFailure e) {
+            throw e;
+        } catch (Throwable t) { // the judge's context threw: it goes back through the student's code
+            reply.body.u8(Protocol.THREW);
+            ThrownData.of(t, "ray.grading.judge.").write(reply.body);
+            process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+            return;
+        }
+        reply.body.u8(Protocol.RETURNED);
+        if (kind == Protocol.CB_UNOCCLUDED) {
+            reply.body.bool(unoccluded);
+        } else {
+            reply.body.vec(radiance);
+        }
+        process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+    }
+
+    /** Runs the judge-side surface the student's code called and sends back what it did. */
+    private void serveIntersect(WireIn in) {
         Surface target = objects.readJudgeSurface(in.i32());
         Ray ray = Records.readRay(in);
         IntersectionRecord record = new IntersectionRecord();

@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import ray.image.Image;
 import ray.math.Vec3;
+import ray.shading.Texture;
 import ray.surface.Surface;
 
 /**
@@ -20,7 +21,8 @@ import ray.surface.Surface;
  *
  * <p>Both sides list the fields the same way, from the same framework classes: the topmost class
  * first, each class's fields by name. A surface's shader stays behind (no student method uses it,
- * and shaders are not data). A field of a type this class cannot send fails at once, so a framework
+ * and shaders are not data), and so does a shader's texture: each shade call carries the texture's
+ * color at its hit instead, looked up on the judge's side ({@link Protocol#OP_SHADE}). A field of a type this class cannot send fails at once, so a framework
  * change that adds one is noticed by the grader's own tests.
  */
 public final class FrameworkFields {
@@ -43,7 +45,8 @@ public final class FrameworkFields {
         for (Class<?> c : chain) {
             List<Field> declared = new ArrayList<>();
             for (Field f : c.getDeclaredFields()) {
-                if (Modifier.isStatic(f.getModifiers()) || f.isSynthetic() || (c == Surface.class && f.getName().equals("shader"))) {
+                if (Modifier.isStatic(f.getModifiers()) || f.isSynthetic() || (c == Surface.class && f.getName().equals("shader"))
+                        || f.getType() == Texture.class) {
                     continue;
                 }
                 check(f);

@@ -9,7 +9,7 @@ package ray.grading.wire;
  * <p>Judge to worker: {@link #CALL} (definitions, then one call), {@link #BATCH} (definitions, then
  * many calls whose answers may come together) and {@link #CALLBACK_ANSWER}. Worker to judge:
  * {@link #READY} once started, {@link #ANSWER}, {@link #BATCH_ANSWER}, {@link #CALLBACK} (the
- * student's code called a judge-side object, a group's child, during a call) and {@link #EXITING}
+ * student's code called a judge-side object during a call: a group's child, or a shader's context) and {@link #EXITING}
  * (the student's code called System.exit during a call).
  */
 public final class Protocol {
@@ -28,7 +28,7 @@ public final class Protocol {
     public static final int EXITING = 14;
 
     /** The first bytes of READY's payload: both sides must be built from the same grading code. */
-    public static final String VERSION = "ray1-grading-wire-1";
+    public static final String VERSION = "ray1-grading-wire-2";
 
     // Definitions, sent ahead of the calls that use them.
     /** A twin: the student's class made by its no-argument constructor (handle, class name). */
@@ -70,12 +70,34 @@ public final class Protocol {
     public static final int OP_INTERSECT = 1;
     public static final int OP_GENERATE_RAY = 2;
     public static final int OP_TEX_COLOR = 3;
+    /**
+     * A shader's shade(hit, ray, context, depth): the twin, the hit (a record), the ray, the depth, the
+     * scene's lights (count, then each position and intensity), and the color at the hit of the
+     * shader's texture when it has one (a vector, or none): the texture stays on the judge's side, so
+     * a texture the student's code gets wrong costs no shading points. The student's calls on the
+     * context come back as callbacks ({@link #CB_UNOCCLUDED}, {@link #CB_RADIANCE}).
+     */
+    public static final int OP_SHADE = 4;
+
+    // What a callback asks (its first byte), worker to judge, during a call.
+    /** A judge-side surface's intersect: its handle, the ray, the record. */
+    public static final int CB_INTERSECT = 1;
+    /**
+     * The shading context's shadow test: whether the hit is the one the call gave (then the judge
+     * tests its own), the hit as a record, and the light's position; the answer is a boolean.
+     */
+    public static final int CB_UNOCCLUDED = 2;
+    /** The shading context's mirror radiance: the hit as for {@link #CB_UNOCCLUDED}, the direction and the depth; the answer a vector. */
+    public static final int CB_RADIANCE = 3;
 
     // Answers.
     public static final int RETURNED = 0;
     public static final int THREW = 1;
     /** Batches only: the call needs judge-side answers it was not given; asked again with them. */
     public static final int NEED = 2;
+
+    /** The most lights a shade call carries. */
+    public static final int MAX_LIGHTS = 10_000;
 
     // Limits on what the worker may send.
     /** Characters of an exception's message kept. */

@@ -30,7 +30,7 @@ final class JudgeLink {
         this.in = in;
         this.out = out;
         this.objects = new WorkerObjects(this);
-        this.calls = new WorkerCalls(objects);
+        this.calls = new WorkerCalls(objects, this);
         this.batches = new BatchCalls(objects, this);
     }
 
@@ -83,8 +83,8 @@ final class JudgeLink {
     }
 
     /**
-     * Asks the judge to run a judge-side surface's intersect ({@code request}: its handle, the ray and
-     * the record) and returns the answer, serving the judge's calls until it comes.
+     * Asks the judge something during a call ({@code request}: a callback's kind, then what it needs;
+     * {@link Protocol#CB_INTERSECT}) and returns the answer, serving the judge's calls until it comes.
      */
     WireIn callback(WireOut request) {
         try {

@@ -41,7 +41,7 @@ final class JudgeSurface extends Surface {
             return batch.judgeAnswer(this, out, ray);
         }
         WireOut request = new WireOut();
-        request.i32(handle);
+        request.u8(Protocol.CB_INTERSECT).i32(handle);
         Records.writeRay(request, ray);
         Records.write(request, out, objects);
         WireIn answer = link.callback(request);

@@ -1,5 +1,7 @@
 package ray.grading.worker;
 
+import java.util.ArrayList;
+import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
@@ -10,6 +12,9 @@ import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.math.Vec3;
+import ray.shading.DirectLighting;
+import ray.shading.Light;
+import ray.shading.Shader;
 import ray.shading.Texture;
 import ray.surface.Surface;
 
@@ -21,9 +26,11 @@ import ray.surface.Surface;
  */
 final class WorkerCalls {
     private final WorkerObjects objects;
+    private final JudgeLink link;
 
-    WorkerCalls(WorkerObjects objects) {
+    WorkerCalls(WorkerObjects objects, JudgeLink link) {
         this.objects = objects;
+        this.link = link;
     }
 
     /** A CALL message: its definitions, then one call; the answer. */
@@ -42,6 +49,9 @@ final class WorkerCalls {
                     break;
                 case Protocol.OP_TEX_COLOR:
                     texColor(in, answer);
+                    break;
+                case Protocol.OP_SHADE:
+                    shade(in, answer);
                     break;
                 default:
                     throw new WireError("a call of kind " + op);
@@ -120,6 +130,34 @@ final class WorkerCalls {
         Vec3 color;
         try {
             color = texture.getTexColor(u, v);
+        } catch (Throwable t) {
+            threw(answer, t);
+            return;
+        }
+        answer.u8(Protocol.RETURNED).vec(color);
+    }
+
+    private void shade(WireIn in, WireOut answer) {
+        int handle = target(in);
+        IntersectionRecord hit = new IntersectionRecord();
+        Records.read(in, hit, objects);
+        Ray ray = Records.readRay(in);
+        int depth = in.i32();
+        int count = in.count(Protocol.MAX_LIGHTS, "lights");
+        List<Light> lights = new ArrayList<>(count);
+        for (int k = 0; k < count; k++) {
+            lights.add(new Light(in.vec(), in.vec()));
+        }
+        Vec3 textureColor = in.vec();
+        in.end();
+        Shader twin = objects.twin(handle, Shader.class);
+        Vec3 color;
+        try {
+            if (twin instanceof DirectLighting) {
+                // The texture stayed on the judge's side, which sent its color at this hit.
+                ((DirectLighting) twin).setTexture(textureColor == null ? null : new GivenColor(textureColor));
+            }
+            color = twin.shade(hit, ray, new JudgeShading(lights, hit, link, objects), depth);
         } catch (Throwable t) {
             threw(answer, t);
             return;
