@@ -47,6 +47,11 @@ public final class AssignmentDocs {
     /** "Task 2", "Tasks 2 and 3", "Tasks 1, 2 or 4", "TODO(Task 2)", "-Ptask=2". */
     private static final Pattern NUMBERS = Pattern.compile("\\b(Tasks? )(\\d+)((?:(?:, | and | or | to )\\d+\\b)*)|(-Ptask=)(\\d+)");
     private static final Pattern NUMBER = Pattern.compile("\\d+");
+    /**
+     * A task the default preset leaves out, named by its id where its number goes: "Task [lighting]",
+     * "TODO(Task [lighting])", "-Ptask=[lighting]" become that task's number in the assignment.
+     */
+    private static final Pattern BY_ID = Pattern.compile("(Task |-Ptask=)\\[([\\w-]+)\\]");
 
     private AssignmentDocs() {
     }
@@ -248,7 +253,19 @@ public final class AssignmentDocs {
                 m.appendReplacement(out, Matcher.quoteReplacement(replaced));
             }
             m.appendTail(out);
-            return out.toString();
+            Matcher byId = BY_ID.matcher(out.toString());
+            StringBuilder named = new StringBuilder();
+            while (byId.find()) {
+                String id = known(byId.group(2), n);
+                int number = assignment.number(id);
+                if (number == 0) {
+                    throw new IllegalArgumentException(fileName + ":" + (n + 1) + ": names Task [" + id + "], which this assignment leaves out;"
+                            + " put it in an <!-- IF TASK " + id + " --> block: " + line.strip());
+                }
+                byId.appendReplacement(named, Matcher.quoteReplacement(byId.group(1) + number));
+            }
+            byId.appendTail(named);
+            return named.toString();
         }
 
         private int number(String canonicalNumber, String line, int n) {

@@ -107,6 +107,6 @@ public class AssignmentGradingTest {
         }
         assertEquals(1, status);
         assertTrue(err.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8).contains(
-                "there is no task \"bvh\"; the tasks are camera-rays, group, sphere, triangle, textures, cylinder"));
+                "there is no task \"bvh\"; the tasks are camera-rays, group, sphere, lighting, triangle, textures, cylinder"));
     }
 }

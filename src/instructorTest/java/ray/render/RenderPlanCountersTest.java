@@ -179,6 +179,8 @@ public class RenderPlanCountersTest {
             Map.entry("mesh-smooth", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
             Map.entry("one-sphere-phong", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("one-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS)),
+            Map.entry("lights-and-shadows", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("phong-highlights", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("rgb-normals", Set.of(Effect.ACCELERATION)),
             Map.entry("two-boxes", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS)),
             Map.entry("inverted-box", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS)),
