@@ -69,4 +69,32 @@ public class TraceBlameTest {
         assertFalse(out, out.contains("mirrored row"));
         assertTrue(out, out.contains("See TODO(Task 5)"));
     }
+
+    /**
+     * A light loop without the 1/r² falloff: at pixel (160, 150) of lights-and-shadows, on the ground,
+     * the trace puts the shader's own result for each light beside the formula's and marks the two
+     * lights that differ; the light behind the ground adds nothing either way.
+     */
+    @Test
+    public void aLightLoopWithoutTheFalloffIsShownBesideTheFormula() throws Exception {
+        String out = VariantTrace.of(Variant.wrong("lighting-no-falloff", 0), folder.getRoot().toPath(), "scenes/lights-and-shadows.xml",
+                160, 150);
+        assertTrue(out, out.contains("adds         (39.2899, 32.7416, 24.3223)   ✗ not the formula's (0.953844, 0.79487, 0.590475)"));
+        assertTrue(out, out.contains("adds         (3.75497, 6.25829, 11.6225)   ✗ not the formula's"));
+        assertTrue(out, out.contains("adds         (0, 0, 0)\n"));
+    }
+
+    /** The solution's light loop agrees with the formula at every light of that pixel. */
+    @Test
+    public void theSolutionsLightLoopAgreesWithTheFormula() throws Exception {
+        Path solution = folder.newFolder("solution-lighting").toPath();
+        Files.createDirectories(solution.resolve("ray/shading"));
+        for (String name : new String[] {"Lambertian.java", "Phong.java"}) {
+            Files.copy(Path.of("src/main/java/ray/shading/" + name), solution.resolve("ray/shading/" + name));
+        }
+        String out = VariantTrace.of(Variant.written("solution-lighting", 0, solution), folder.newFolder("work-lighting").toPath(),
+                "scenes/lights-and-shadows.xml", 160, 150);
+        assertTrue(out, out.contains("adds         (0.953844, 0.79487, 0.590475)"));
+        assertFalse(out, out.contains("not the formula's"));
+    }
 }

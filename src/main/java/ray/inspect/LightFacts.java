@@ -89,6 +89,45 @@ final class LightFacts {
         return shadow != null && shadow.blockedByGroup;
     }
 
+    /**
+     * What the formula says the light adds (zero when blocked, else the diffuse and specular terms
+     * worked out here), or null for a shader with neither term (nothing to compare with).
+     */
+    Vec3 formula() {
+        if (diffuse == null && specular == null) {
+            return null;
+        }
+        if (blocked()) {
+            return Vec3.ZERO;
+        }
+        Vec3 sum = Vec3.ZERO;
+        if (diffuse != null) {
+            sum = sum.plus(diffuse);
+        }
+        if (specular != null) {
+            sum = sum.plus(specular);
+        }
+        return sum;
+    }
+
+    /** Whether the shader's own result for the light is the formula's, to a millionth of it (a light loop of the students' may not be). */
+    boolean agreesWithFormula() {
+        Vec3 expected = formula();
+        if (expected == null) {
+            return true;
+        }
+        if (adds == null) {
+            return false;
+        }
+        for (int axis = 0; axis < 3; axis++) {
+            double e = expected.get(axis);
+            if (!(Math.abs(adds.get(axis) - e) <= 1e-6 * Math.max(1e-3, Math.abs(e)))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private static boolean isZero(Vec3 v) {
         return v.x == 0 && v.y == 0 && v.z == 0;
     }

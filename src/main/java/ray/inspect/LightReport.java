@@ -51,7 +51,12 @@ final class LightReport {
                     + (y2019 ? " · " + Fmt.num(Math.max(0, f.nl)) : "") + " / " + Fmt.num(f.r2) + " = "
                     + Fmt.vec(f.specular) + (y2019 ? "   (2019: weighted by n·l like the diffuse term)" : "   (not gated by n·l)")));
         }
-        out.println(Fmt.row(in, "adds", f.blocked() ? "nothing: the shadow ray is blocked" : Fmt.vec(f.adds)));
+        if (f.agreesWithFormula() || !shader.evaluatesAt(hit, ray)) {
+            out.println(Fmt.row(in, "adds", f.blocked() ? "nothing: the shadow ray is blocked" : Fmt.vec(f.adds)));
+        } else {
+            out.println(Fmt.row(in, "adds", Fmt.vec(f.adds) + "   ✗ not the formula's " + Fmt.vec(f.formula())
+                    + ": the shader's shade returns another value for this light"));
+        }
         return f.adds;
     }
 }

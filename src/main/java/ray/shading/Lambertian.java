@@ -1,5 +1,6 @@
 package ray.shading;
 
+import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
@@ -48,12 +49,13 @@ public class Lambertian extends LambertianShader {
         //      (Vec3.times(Vec3)); return L, which starts at Vec3.ZERO.
         // END HINTS
         // BEGIN SOLUTION
-        if (context.lights().isEmpty()) {
+        List<Light> lights = context.lights();
+        if (lights.isEmpty()) {
             return Vec3.ZERO; // no light to reflect: not even the texture is looked up
         }
         Vec3 kd = diffuseColorAt(hit);
         Vec3 sum = Vec3.ZERO;
-        for (Light light : context.lights()) {
+        for (Light light : lights) {
             Vec3 toLight = light.getPosition().minus(hit.location);
             double distanceSquared = toLight.lengthSquared();
             if (distanceSquared == 0) {

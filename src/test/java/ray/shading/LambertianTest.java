@@ -71,11 +71,13 @@ public class LambertianTest {
         p.check(matte(v(1, 1, 1)), v(1, 0, 0.8), "the blocked light's share left out");
     }
 
-    /** With every light blocked the point is black, however bright the lights. */
+    /** With every light blocked the point is black, however bright the lights; unblocked, the same lights light it. */
     @Test
     public void everyLightBlockedIsBlack() {
+        LitPoint lit = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 0, 3)).light(v(0, 0, 1), v(100, 100, 100)).light(v(0, 0, 2), v(8, 8, 8));
+        lit.check(matte(v(1, 1, 1)), v(102, 102, 102), "100/1 + 8/4");
         LitPoint p = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 0, 3)).blockedLight(v(0, 0, 1), v(100, 100, 100))
-                .blockedLight(v(2, 0, 1), v(7, 8, 9));
+                .blockedLight(v(0, 0, 2), v(8, 8, 8));
         p.check(matte(v(1, 1, 1)), Vec3.ZERO, "no light reaches it");
     }
 
@@ -87,9 +89,11 @@ public class LambertianTest {
         p.check(matte(v(1, 1, 1)), v(1, 1, 1), "only the light in front: 4 · 1/4");
     }
 
-    /** No lights: black. */
+    /** No lights: black; one light: lit. */
     @Test
     public void noLightsIsBlack() {
+        LitPoint lit = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 0, 3)).light(v(0, 0, 2), v(4, 4, 4));
+        lit.check(matte(v(1, 1, 1)), v(1, 1, 1), "4 · 1/4");
         LitPoint p = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 0, 3));
         p.check(matte(v(1, 1, 1)), Vec3.ZERO, "");
     }
