@@ -155,6 +155,20 @@ public class ExploreApiTest {
             assertEquals(1, light.get("nDotL").getAsDouble(), 1e-12);
             double scale = 64.0 / 16 / Math.PI;
             assertVec(new double[] {0.8 * scale, 0.5 * scale, 0.2 * scale}, light.getAsJsonArray("diffuse"), 1e-12);
+            assertTrue(light.get("agreesWithFormula").getAsBoolean());
+        }
+    }
+
+    /** The page gets each light's formula share beside the shader's own, which agree for the framework's shaders. */
+    @Test(timeout = 120_000)
+    public void eachLightsFormulaShareAgreesWithTheShader() throws Exception {
+        try (Explorer explorer = Explorer.start(Path.of("scenes/lights-and-shadows.xml"), null, 0)) {
+            JsonObject story = json(explorer, "api/trace?x=160&y=150", 200);
+            JsonObject key = story.getAsJsonArray("lights").get(0).getAsJsonObject();
+            assertVec(new double[] {0.953844, 0.79487, 0.590475}, key.getAsJsonArray("formula"), 1e-6);
+            for (JsonElement l : story.getAsJsonArray("lights")) {
+                assertTrue(l.toString(), l.getAsJsonObject().get("agreesWithFormula").getAsBoolean());
+            }
         }
     }
 

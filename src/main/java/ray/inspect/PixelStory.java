@@ -267,6 +267,9 @@ public final class PixelStory {
         l.add("diffuse", vec(f.diffuse));
         l.add("specular", vec(f.specular));
         l.add("adds", vec(f.adds));
+        // The formula's share beside the shader's own, for a light loop of the students' that differs.
+        l.add("formula", vec(f.formula()));
+        l.addProperty("agreesWithFormula", f.agreesWithFormula());
         return l;
     }
 }

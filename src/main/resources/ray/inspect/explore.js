@@ -676,6 +676,10 @@ function lightBlock(light) {
       ['diffuse', light.diffuse ? fmtVec(light.diffuse) : '—'],
       ['specular', light.specular ? fmtVec(light.specular) : '—'],
       ['adds', fmtVec(light.adds)],
+      // agreesWithFormula false: the shader's own shade (a student's light loop) differs from the formula's share.
+      ['', light.agreesWithFormula === false
+        ? el('span', { class: 'error' }, `✗ not the formula's ${fmtVec(light.formula)}: the shader's shade returns another value for this light`)
+        : null],
     ]),
   );
 }
