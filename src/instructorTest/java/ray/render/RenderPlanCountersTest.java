@@ -104,6 +104,40 @@ public class RenderPlanCountersTest {
         }
     }
 
+    /**
+     * The light loop is the students' code, and the counters count what it does: a loop that asks
+     * the shadow test before it knows the light is behind the surface shows one shadow ray per light
+     * and hit where the solution's casts none; the image is the same.
+     */
+    @Test
+    public void theCountersShowAShadowRayTheLightLoopDidNotNeed() {
+        Lambertian shadowTestFirst = new Lambertian() {
+            @Override
+            public Vec3 shade(ray.IntersectionRecord hit, ray.Ray ray, ray.shading.ShadingContext context, int depth) {
+                Vec3 sum = Vec3.ZERO;
+                for (Light light : context.lights()) {
+                    if (context.unoccluded(hit, light.getPosition())) {
+                        Vec3 toLight = light.getPosition().minus(hit.location);
+                        double cosine = Math.max(0, hit.normal.dot(toLight.normalized()));
+                        sum = sum.plus(diffuseColorAt(hit).times(light.getIntensity()).times(cosine / toLight.lengthSquared()));
+                    }
+                }
+                return sum;
+            }
+        };
+        RenderResult[] results = new RenderResult[2];
+        Shader[] shaders = {new Lambertian(), shadowTestFirst};
+        for (int k = 0; k < 2; k++) {
+            Scene scene = floorScene(shaders[k]);
+            scene.addLight(new Light(v(0, 0, -3), Vec3.ONE)); // below the floor, which faces up
+            scene.complete();
+            results[k] = new Renderer(scene, 1, 2).render();
+        }
+        assertEquals("the solution's loop: no shadow ray for a light behind the surface", 0, results[0].rays.shadow);
+        assertEquals("a loop that tests shadows first: one per hit", 15, results[1].rays.shadow);
+        assertSameBits("the same image", results[0].image, results[1].image);
+    }
+
     @Test
     public void withoutAccelerationIntersectionTestsAreRaysTimesPrimitives() {
         Scene scene = floorScene(new Lambertian());
