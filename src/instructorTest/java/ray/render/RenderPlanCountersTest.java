@@ -215,6 +215,7 @@ public class RenderPlanCountersTest {
             Map.entry("one-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS)),
             Map.entry("lights-and-shadows", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("phong-highlights", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
+            Map.entry("mirror-pair", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.REFLECTION)),
             Map.entry("rgb-normals", Set.of(Effect.ACCELERATION)),
             Map.entry("two-boxes", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS)),
             Map.entry("inverted-box", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS)),

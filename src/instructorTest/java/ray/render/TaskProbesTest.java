@@ -146,25 +146,28 @@ public class TaskProbesTest {
 
     @Test
     public void theLineNamesTheStubsAndWhereToStart() {
-        // Numbered as course-2017 numbers them: cameras, group, sphere, lighting, triangle, textures, cylinder.
-        assertEquals("Still stubs: Task 1 (Camera rays), Task 2 (Group), Task 3 (Sphere), Task 4 (Lighting), Task 5 (Triangle),"
-                + " Task 6 (Textures), Task 7 (Cylinder, extra credit). Start with Task 1: the TODO(Task 1) comments in"
+        // Numbered as course-2017 numbers them: cameras, ray color, group, sphere, lighting, triangle, textures, cylinder.
+        assertEquals("Still stubs: Task 1 (Camera rays), Task 2 (Ray color), Task 3 (Group), Task 4 (Sphere), Task 5 (Lighting),"
+                + " Task 6 (Triangle), Task 7 (Textures), Task 8 (Cylinder, extra credit). Start with Task 1: the TODO(Task 1) comments in"
                 + " src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.allOf(Part.class)));
-        // After the cameras, the table of tasks' order (pictures earliest) puts the group.
-        assertEquals("Still stubs: Task 2 (Group), Task 3 (Sphere), Task 5 (Triangle). Start with Task 2: the TODO(Task 2) comment in"
+        // After the cameras, the table of tasks' order (pictures earliest) puts the ray's color, then the group.
+        assertEquals("Still stubs: Task 2 (Ray color), Task 3 (Group), Task 4 (Sphere), Task 6 (Triangle). Start with Task 2: the"
+                + " TODO(Task 2) comment in src/main/java/ray/render/RayTracer.java (see docs/assignment.md).",
+                TaskProbes.stillStubsLine(EnumSet.of(Part.RAY_TRACER, Part.SPHERE, Part.TRIANGLE, Part.GROUP)));
+        assertEquals("Still stubs: Task 3 (Group), Task 4 (Sphere), Task 6 (Triangle). Start with Task 3: the TODO(Task 3) comment in"
                 + " src/main/java/ray/surface/Group.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.SPHERE, Part.TRIANGLE, Part.GROUP)));
         // Half a task is named by its file.
-        assertEquals("Still stubs: Task 1 (OrthographicCamera), Task 4 (Phong), Task 6 (ClampTexture). Start with Task 1: the TODO(Task 1)"
+        assertEquals("Still stubs: Task 1 (OrthographicCamera), Task 5 (Phong), Task 7 (ClampTexture). Start with Task 1: the TODO(Task 1)"
                 + " comment in src/main/java/ray/camera/OrthographicCamera.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.ORTHOGRAPHIC_CAMERA, Part.PHONG, Part.CLAMP_TEXTURE)));
         // The light loops come after the sphere: without them every picture is black.
-        assertEquals("Still stubs: Task 4 (Lighting), Task 6 (Textures), Task 7 (Cylinder, extra credit). Start with Task 4: the TODO(Task 4)"
+        assertEquals("Still stubs: Task 5 (Lighting), Task 7 (Textures), Task 8 (Cylinder, extra credit). Start with Task 5: the TODO(Task 5)"
                 + " comments in src/main/java/ray/shading/Lambertian.java and Phong.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.LAMBERTIAN, Part.PHONG, Part.REPEAT_TEXTURE, Part.CLAMP_TEXTURE, Part.CYLINDER)));
         // The extra credit alone is offered, not prescribed.
-        assertEquals("Still a stub: Task 7 (Cylinder, extra credit). For the extra credit: the TODO(Task 7) comment in"
+        assertEquals("Still a stub: Task 8 (Cylinder, extra credit). For the extra credit: the TODO(Task 8) comment in"
                 + " src/main/java/ray/surface/Cylinder.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.CYLINDER)));
         for (Part part : Part.values()) {

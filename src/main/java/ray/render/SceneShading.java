@@ -12,9 +12,9 @@ import ray.surface.HitGeometry;
 import ray.surface.Surface;
 
 /**
- * The scene's shading context, the renderer's tracing rules in one place: a ray's radiance is its
- * closest hit (by the scene's group, the student's loop) shaded by the hit primitive's shader, or
- * the background on a miss;
+ * The scene's shading context, the renderer's tracing rules in one place: a ray's radiance is what
+ * the ray tracer's {@code shadeRay} returns ({@link RayTracer}: its closest hit, by the scene's group,
+ * shaded by the hit primitive's shader, or the background on a miss);
  * shadow and reflection rays start off the surface by the plan's {@link RayOffsets}, from the
  * hit's geometry that the scene measures after the search ({@link Scene#hitGeometry}). The renderer
  * counts rays with a subclass ({@link CountingShading}); {@code ray1 trace} uses one to take a
@@ -34,6 +34,8 @@ public class SceneShading implements ShadingContext {
     private IntersectionRecord lastHit;
     private Vec3 lastLocation;
     private HitGeometry lastGeometry;
+    /** The ray tracer whose shadeRay gives every ray's radiance (the students' code, when it is a task). */
+    private final SceneTracer tracer = new RayTracer();
 
     public SceneShading(Scene scene) {
         this(scene, RayOffsets.SCALED);
@@ -53,19 +55,17 @@ public class SceneShading implements ShadingContext {
         this.surfaces = surfaces;
         this.offsets = offsets;
         this.anyHitShadows = acceleration == Acceleration.BVH;
+        tracer.use(surfaces, scene.getBackColor(), this::shade);
+        tracer.complete();
     }
 
     public Scene scene() {
         return scene;
     }
 
-    /** The radiance that arrives along {@code ray}, a ray of recursion depth {@code depth}. */
+    /** The radiance that arrives along {@code ray}, a ray of recursion depth {@code depth}: the ray tracer's {@code shadeRay}. */
     public Vec3 radiance(Ray ray, int depth) {
-        IntersectionRecord hit = new IntersectionRecord();
-        if (!surfaces.intersect(hit, ray)) {
-            return scene.getBackColor();
-        }
-        return shade(hit, ray, depth);
+        return tracer.shadeRay(ray, depth);
     }
 
     /** Shades a closest hit of {@code ray} with the hit primitive's shader. */

@@ -54,6 +54,7 @@ public final class TaskProbes {
     public enum Part {
         PERSPECTIVE_CAMERA("PerspectiveCamera"),
         ORTHOGRAPHIC_CAMERA("OrthographicCamera"),
+        RAY_TRACER("RayTracer"),
         SPHERE("Sphere"),
         TRIANGLE("Triangle"),
         GROUP("Group"),
@@ -122,6 +123,8 @@ public final class TaskProbes {
                 case ORTHOGRAPHIC_CAMERA:
                     // The upper-right corner's ray: from that corner of the view, (1, 1, 0), straight ahead.
                     return camera(new OrthographicCamera(), new Vec3(1, 1, 0), new Vec3(0, 0, -1));
+                case RAY_TRACER:
+                    return rayTracer();
                 case SPHERE:
                     return sphere();
                 case TRIANGLE:
@@ -300,6 +303,27 @@ public final class TaskProbes {
                     + ", direction " + ray.direction + "): is it still the stub?";
         }
         return null;
+    }
+
+    /**
+     * A scene of one surface hit at t = 3 by rays from (0, 0, 5) along −z, whose hits shade to
+     * (0.2, 0.4, 0.6), under a sky of (0.1, 0.3, 0.5): the ray straight ahead must bring back the
+     * shaded color, and one sent the other way the sky. The stub brings back black for both.
+     */
+    private static Finding rayTracer() {
+        RayTracer tracer = new RayTracer();
+        Vec3 shaded = new Vec3(0.2, 0.4, 0.6);
+        Vec3 sky = new Vec3(0.1, 0.3, 0.5);
+        tracer.use(new HitAt(3), sky, (hit, ray, depth) -> hit.t == 3 ? shaded : Vec3.ZERO);
+        tracer.complete();
+        Vec3 ahead = tracer.shadeRay(ahead(), 0);
+        Vec3 away = tracer.shadeRay(new Ray(new Vec3(0, 0, 5), new Vec3(0, 0, 1), 0, 1), 0);
+        boolean stub = isBlack(ahead) && isBlack(away);
+        String problem = ahead == null || !close(ahead, shaded)
+                ? "RayTracer.shadeRay returned " + ahead + " for a ray that hits a surface whose hit shades to " + shaded + "; expected " + shaded
+                : away == null || !close(away, sky) ? "RayTracer.shadeRay returned " + away + " for a ray that hits nothing; expected the background "
+                        + sky : null;
+        return new Finding(stub, problem);
     }
 
     /** A unit sphere at the origin: straight ahead (t = 4), from inside it, and along a long slanted direction. */

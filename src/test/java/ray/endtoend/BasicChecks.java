@@ -31,12 +31,12 @@ final class BasicChecks {
     }
 
     /**
-     * The tasks of this assignment whose code renders {@code scene}, in their order: the camera and
-     * the group always, each primitive or texture it holds, and the light loops when it is lit (a
-     * task the assignment does not choose ships solved, and is never to blame).
+     * The tasks of this assignment whose code renders {@code scene}, in their order: the camera, the
+     * ray's color and the group always, each primitive or texture it holds, and the light loops when
+     * it is lit (a task the assignment does not choose ships solved, and is never to blame).
      */
     static Set<StudentTask> tasksOf(Scene scene) {
-        Set<String> ids = new HashSet<>(Set.of("camera-rays", "group"));
+        Set<String> ids = new HashSet<>(Set.of("camera-rays", "ray-color", "group"));
         addTasksOf(scene.getSurfaces(), ids);
         // Texture lookups, as the renderer's plan counts them: a lit shader with a texture on any
         // surface, named in the scene or written inline in the shader.

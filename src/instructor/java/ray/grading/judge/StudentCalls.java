@@ -12,6 +12,7 @@ import ray.grading.wire.ThrownData;
 import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.math.Vec3;
+import ray.render.SceneTracer;
 import ray.shading.Light;
 import ray.shading.Shader;
 import ray.shading.ShadingContext;
@@ -170,6 +171,45 @@ public final class StudentCalls {
                     m.body.vec(light.getPosition()).vec(light.getIntensity());
                 }
                 m.body.vec(textureColor);
+            }, in -> {
+                int status = in.u8();
+                if (status == Protocol.THREW) {
+                    return Outcome.threw(ThrownData.read(in));
+                }
+                expect(status);
+                return Outcome.value(in.vec());
+            });
+        } finally {
+            calls.removeLast();
+        }
+        outcome.rethrow(self);
+        return (Vec3) outcome.value;
+    }
+
+    /** The student's shadeRay calls running on each thread, the innermost last: whose hits the worker's callbacks have shaded. */
+    private static final ThreadLocal<Deque<SceneTracer>> TRACING = ThreadLocal.withInitial(ArrayDeque::new);
+
+    /** The innermost ray tracer whose shadeRay runs on this thread, or null. */
+    static SceneTracer tracing() {
+        return TRACING.get().peekLast();
+    }
+
+    /**
+     * The student's {@code shadeRay(ray, depth)} on {@code self}'s twin, asked at once: the twin searches
+     * the judge's scene ({@link Protocol#CB_INTERSECT}) and has its hits shaded here by the stand-in's own
+     * shading ({@link Worker#serveShadeHit}), which may trace mirror rays through this method again.
+     */
+    public static Vec3 shadeRay(SceneTracer self, Ray ray, int depth) {
+        Worker worker = Worker.get();
+        Deque<SceneTracer> calls = TRACING.get();
+        calls.addLast(self);
+        Outcome outcome;
+        try {
+            outcome = worker.call(m -> {
+                m.body.u8(Protocol.OP_SHADE_RAY);
+                m.target((StandIn) self);
+                Records.writeRay(m.body, ray);
+                m.body.i32(depth);
             }, in -> {
                 int status = in.u8();
                 if (status == Protocol.THREW) {

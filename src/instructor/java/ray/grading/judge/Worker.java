@@ -218,6 +218,9 @@ final class Worker {
             case Protocol.CB_RADIANCE:
                 serveShading(kind, in);
                 break;
+            case Protocol.CB_SHADE_HIT:
+                serveShadeHit(in);
+                break;
             default:
                 throw new WireError("a callback of kind " + kind);
         }
@@ -263,6 +266,36 @@ final class Worker {
         } else {
             reply.body.vec(radiance);
         }
+        process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+    }
+
+    /**
+     * Shades the hit the student's shadeRay asked to have shaded, with the stand-in's own shading (the
+     * renderer's or the test's), and sends back the color.
+     */
+    void serveShadeHit(WireIn in) {
+        ray.render.SceneTracer tracer = StudentCalls.tracing();
+        if (tracer == null) {
+            throw new WireError("a shading callback outside a shadeRay call");
+        }
+        IntersectionRecord hit = new IntersectionRecord();
+        Records.read(in, hit, objects.reader());
+        Ray ray = Records.readRay(in);
+        int depth = in.i32();
+        in.end();
+        JudgeObjects.Message reply = objects.new Message();
+        Vec3 color;
+        try {
+            color = tracer.shade(hit, ray, depth);
+        } catch (WorkerFailure e) {
+            throw e;
+        } catch (Throwable t) { // the judge's shading threw: it goes back through the student's code
+            reply.body.u8(Protocol.THREW);
+            ThrownData.of(t, "ray.grading.judge.").write(reply.body);
+            process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+            return;
+        }
+        reply.body.u8(Protocol.RETURNED).vec(color);
         process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
     }
 

@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import ray.image.Image;
 import ray.math.Vec3;
+import ray.render.HitShading;
 import ray.shading.Texture;
 import ray.surface.Surface;
 
@@ -22,7 +23,8 @@ import ray.surface.Surface;
  * <p>Both sides list the fields the same way, from the same framework classes: the topmost class
  * first, each class's fields by name. A surface's shader stays behind (no student method uses it,
  * and shaders are not data), and so does a shader's texture: each shade call carries the texture's
- * color at its hit instead, looked up on the judge's side ({@link Protocol#OP_SHADE}). A field of a type this class cannot send fails at once, so a framework
+ * color at its hit instead, looked up on the judge's side ({@link Protocol#OP_SHADE}); and so does a
+ * ray tracer's shading of hits, which the worker asks back ({@link Protocol#CB_SHADE_HIT}). A field of a type this class cannot send fails at once, so a framework
  * change that adds one is noticed by the grader's own tests.
  */
 public final class FrameworkFields {
@@ -46,7 +48,7 @@ public final class FrameworkFields {
             List<Field> declared = new ArrayList<>();
             for (Field f : c.getDeclaredFields()) {
                 if (Modifier.isStatic(f.getModifiers()) || f.isSynthetic() || (c == Surface.class && f.getName().equals("shader"))
-                        || f.getType() == Texture.class) {
+                        || f.getType() == Texture.class || f.getType() == HitShading.class) {
                     continue;
                 }
                 check(f);
@@ -61,7 +63,8 @@ public final class FrameworkFields {
 
     private static void check(Field f) {
         Class<?> t = f.getType();
-        if (t != double.class && t != int.class && t != boolean.class && t != Vec3.class && t != Image.class && t != List.class) {
+        if (t != double.class && t != int.class && t != boolean.class && t != Vec3.class && t != Image.class && t != List.class
+                && t != Surface.class) {
             throw new IllegalStateException("grading cannot send " + f.getDeclaringClass().getName() + "." + f.getName()
                     + " of type " + t.getName() + "; teach ray.grading.wire.FrameworkFields that type");
         }
@@ -82,6 +85,8 @@ public final class FrameworkFields {
                     out.vec((Vec3) f.get(object));
                 } else if (t == Image.class) {
                     refs.writeImage(out, (Image) f.get(object));
+                } else if (t == Surface.class) {
+                    refs.writeSurface(out, (Surface) f.get(object));
                 } else {
                     List<?> list = (List<?>) f.get(object);
                     out.i32(list.size());
@@ -127,6 +132,9 @@ public final class FrameworkFields {
                 values.add(in.vec());
             } else if (t == Image.class) {
                 values.add(refs.readImage(in));
+            } else if (t == Surface.class) {
+                int kind = in.u8();
+                values.add(new SurfaceName(kind, kind == Protocol.REF_NULL ? 0 : in.i32()));
             } else {
                 int n = in.count(Protocol.MAX_PARTS, f.getName());
                 List<SurfaceName> parts = new ArrayList<>(n);
@@ -161,6 +169,8 @@ public final class FrameworkFields {
                     } else {
                         f.set(object, parts);
                     }
+                } else if (f.getType() == Surface.class) {
+                    f.set(object, find.apply((SurfaceName) value));
                 } else {
                     f.set(object, value);
                 }

@@ -78,6 +78,12 @@ public final class Protocol {
      * context come back as callbacks ({@link #CB_UNOCCLUDED}, {@link #CB_RADIANCE}).
      */
     public static final int OP_SHADE = 4;
+    /**
+     * A ray tracer's shadeRay(ray, depth): the twin (whose surfaces are the scene's, a judge-side
+     * surface), the ray and the depth. The student's code searches the scene through that surface
+     * ({@link #CB_INTERSECT}) and has hits shaded by the judge ({@link #CB_SHADE_HIT}).
+     */
+    public static final int OP_SHADE_RAY = 5;
 
     // What a callback asks (its first byte), worker to judge, during a call.
     /** A judge-side surface's intersect: its handle, the ray, the record. */
@@ -89,6 +95,8 @@ public final class Protocol {
     public static final int CB_UNOCCLUDED = 2;
     /** The shading context's mirror radiance: the hit as for {@link #CB_UNOCCLUDED}, the direction and the depth; the answer a vector. */
     public static final int CB_RADIANCE = 3;
+    /** A ray tracer's shading of a hit: the hit (a record), the ray and the depth; the answer a vector. */
+    public static final int CB_SHADE_HIT = 4;
 
     // Answers.
     public static final int RETURNED = 0;

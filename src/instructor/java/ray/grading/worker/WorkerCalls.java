@@ -12,6 +12,7 @@ import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.math.Vec3;
+import ray.render.SceneTracer;
 import ray.shading.DirectLighting;
 import ray.shading.Light;
 import ray.shading.Shader;
@@ -52,6 +53,9 @@ final class WorkerCalls {
                     break;
                 case Protocol.OP_SHADE:
                     shade(in, answer);
+                    break;
+                case Protocol.OP_SHADE_RAY:
+                    shadeRay(in, answer);
                     break;
                 default:
                     throw new WireError("a call of kind " + op);
@@ -158,6 +162,24 @@ final class WorkerCalls {
                 ((DirectLighting) twin).setTexture(textureColor == null ? null : new GivenColor(textureColor));
             }
             color = twin.shade(hit, ray, new JudgeShading(lights, hit, link, objects), depth);
+        } catch (Throwable t) {
+            threw(answer, t);
+            return;
+        }
+        answer.u8(Protocol.RETURNED).vec(color);
+    }
+
+    private void shadeRay(WireIn in, WireOut answer) {
+        int handle = target(in);
+        Ray ray = Records.readRay(in);
+        int depth = in.i32();
+        in.end();
+        SceneTracer twin = objects.twin(handle, SceneTracer.class);
+        Vec3 color;
+        try {
+            // The hits are shaded on the judge's side, which holds the shaders, lights and the rest of the scene.
+            twin.use(twin.surfaces(), twin.backgroundColor(), new JudgeHits(link, objects));
+            color = twin.shadeRay(ray, depth);
         } catch (Throwable t) {
             threw(answer, t);
             return;

@@ -14,16 +14,17 @@ import org.junit.Test;
 import ray.assignment.Assignment;
 
 /**
- * The light loops (the lighting task, which the course-2017 preset gives and the default one does
- * not) written the ways students write them earn every point of their task and render every
- * shipped scene within tolerance; the known mistakes lose points of their task. As
+ * The tasks the course-2017 preset gives and the default one leaves to the framework (the ray's
+ * color and the light loops), written the ways students write them, earn every point of their task
+ * and render every shipped scene within tolerance; the known mistakes lose points of their task. As
  * {@link AlternativeSolutionsTest}, under the course-2017 assignment, whose numbers the grader's
  * tasks then have.
  */
-public class LightingVariantsTest {
+public class ShadingTasksVariantsTest {
     private static final String RENDER_TESTS = "ray.endtoend.";
     private static Assignment before;
     private static int task;
+    private static int rayColor;
     private static Path work;
     /** What each variant passed and failed, in build/variants/lighting-summary.txt for the instructor to read. */
     private static final StringBuilder SUMMARY = new StringBuilder();
@@ -33,13 +34,14 @@ public class LightingVariantsTest {
         before = Assignment.current();
         Assignment.use(Assignment.preset("course-2017"));
         task = Assignment.current().number("lighting");
+        rayColor = Assignment.current().number("ray-color");
         work = Files.createTempDirectory("ray1-lighting-variants");
     }
 
     @AfterClass
     public static void restore() throws Exception {
         Assignment.use(before);
-        Path summary = Path.of("build/variants/lighting-summary.txt");
+        Path summary = Path.of("build/variants/shading-tasks-summary.txt");
         Files.createDirectories(summary.getParent());
         Files.writeString(summary, SUMMARY.toString());
         try (var files = Files.walk(work)) {
@@ -82,6 +84,32 @@ public class LightingVariantsTest {
                     !lost.isEmpty());
         }
         assertEquals(4, report.size());
+    }
+
+    /** The ray's color as one expression, and with the search on a copy of the ray: every point, every render. */
+    @Test
+    public void rayColorWrittenAnyCorrectWayEarnsEveryPoint() throws Exception {
+        StringBuilder unfair = new StringBuilder();
+        for (String name : List.of("ray-color-ternary", "ray-color-copied-ray")) {
+            Variant variant = Variant.correct(name, rayColor);
+            List<VariantGrading.Outcome> outcomes = VariantGrading.run(variant,
+                    (t, type) -> t == rayColor || type.startsWith(RENDER_TESTS), work);
+            summarize(variant, outcomes);
+            assertTrue(variant + " ran no graded test", outcomes.stream().anyMatch(o -> o.task == rayColor));
+            outcomes.stream().filter(o -> !o.passed()).forEach(o -> unfair.append("\n  ").append(variant).append(": ").append(o));
+        }
+        assertTrue("a correct ray color lost points:" + unfair, unfair.length() == 0);
+    }
+
+    /** Black for the background, the hit shaded one depth deeper: each loses points of the ray-color task. */
+    @Test
+    public void rayColorMistakesLosePointsOfTheirTask() throws Exception {
+        for (String name : List.of("ray-color-black-background", "ray-color-depth-plus-one")) {
+            Variant wrong = Variant.wrong(name, rayColor);
+            List<VariantGrading.Outcome> outcomes = VariantGrading.run(wrong, (t, type) -> t == rayColor, work);
+            summarize(wrong, outcomes);
+            assertTrue(wrong + " must lose points of the ray-color task", outcomes.stream().anyMatch(o -> !o.bonus && !o.passed()));
+        }
     }
 
     private static synchronized void summarize(Variant variant, List<VariantGrading.Outcome> outcomes) {
