@@ -97,4 +97,13 @@ public class TraceBlameTest {
         assertTrue(out, out.contains("adds         (0.953844, 0.79487, 0.590475)"));
         assertFalse(out, out.contains("not the formula's"));
     }
+
+    /** A ray color that returns black on a miss: the trace's background beside the renderer's black pixel. */
+    @Test
+    public void aRayColorThatLosesTheBackgroundIsFlaggedAtThePixelValue() throws Exception {
+        String out = VariantTrace.of(Variant.wrong("ray-color-black-background", 0), folder.getRoot().toPath(), "scenes/mirror-pair.xml", 5, 5);
+        assertTrue(out, out.contains("none: the pixel shows the background color (0.35, 0.5, 0.75)"));
+        assertTrue(out, out.contains("radiance     (0, 0, 0)"));
+        assertTrue(out, out.contains("the trace computed (0.35, 0.5, 0.75) for the center ray; the renderer's value above is the one in the image"));
+    }
 }

@@ -79,7 +79,11 @@ public final class PixelTrace {
         out.println(Fmt.row("  ", "radiance", Fmt.vec(value.radiance) + "   (linear RGB, the renderer's result for this pixel)"));
         if (value.samples == 1 && centerRadiance != null && !sameUpToRounding(centerRadiance, value.radiance)) {
             out.println(Fmt.row("  ", "!", "the trace computed " + Fmt.vec(centerRadiance) + " for the center ray; the renderer's"
-                    + " value above is the one in the image"));
+                    + " value above is the one in the image"
+                    + (ray.render.TaskProbes.Part.RAY_TRACER.isStudents()
+                            ? " (the renderer gets every ray's color from RayTracer.shadeRay: the background on a miss, else the"
+                                    + " closest hit shaded; see TODO(Task " + ray.render.TaskProbes.Part.RAY_TRACER.task() + "))"
+                            : "")));
         }
         double exposure = scene.getExposure();
         out.println(Fmt.row("  ", "exposure", Fmt.num(exposure) + ", exposure × radiance = " + Fmt.vec(value.radiance.times(exposure))));
