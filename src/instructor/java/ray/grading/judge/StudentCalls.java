@@ -113,14 +113,7 @@ public final class StudentCalls {
             m.body.u8(op);
             m.target((StandIn) self);
             m.body.f64(u).f64(v);
-        }, in -> {
-            int status = in.u8();
-            if (status == Protocol.THREW) {
-                return Outcome.threw(ThrownData.read(in));
-            }
-            expect(status);
-            return Outcome.value(value.apply(in));
-        });
+        }, in -> returnedOrThrew(in, value));
         outcome.rethrow(self);
         return outcome.value;
     }
@@ -154,36 +147,19 @@ public final class StudentCalls {
      * student's shaders: a call inside this one).
      */
     public static Vec3 shade(Shader self, IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
-        Worker worker = Worker.get();
         Vec3 textureColor = self.getTexture() != null ? self.diffuseColorAt(hit) : null;
         List<Light> lights = context.lights();
-        Deque<ShadeCall> calls = SHADING.get();
-        calls.addLast(new ShadeCall(context, hit));
-        Outcome outcome;
-        try {
-            outcome = worker.call(m -> {
-                m.body.u8(Protocol.OP_SHADE);
-                m.target((StandIn) self);
-                Records.write(m.body, hit, m);
-                Records.writeRay(m.body, ray);
-                m.body.i32(depth).i32(lights.size());
-                for (Light light : lights) {
-                    m.body.vec(light.getPosition()).vec(light.getIntensity());
-                }
-                m.body.vec(textureColor);
-            }, in -> {
-                int status = in.u8();
-                if (status == Protocol.THREW) {
-                    return Outcome.threw(ThrownData.read(in));
-                }
-                expect(status);
-                return Outcome.value(in.vec());
-            });
-        } finally {
-            calls.removeLast();
-        }
-        outcome.rethrow(self);
-        return (Vec3) outcome.value;
+        return colorCall(self, SHADING.get(), new ShadeCall(context, hit), m -> {
+            m.body.u8(Protocol.OP_SHADE);
+            m.target((StandIn) self);
+            Records.write(m.body, hit, m);
+            Records.writeRay(m.body, ray);
+            m.body.i32(depth).i32(lights.size());
+            for (Light light : lights) {
+                m.body.vec(light.getPosition()).vec(light.getIntensity());
+            }
+            m.body.vec(textureColor);
+        });
     }
 
     /** The student's shadeRay calls running on each thread, the innermost last: whose hits the worker's callbacks have shaded. */
@@ -200,29 +176,39 @@ public final class StudentCalls {
      * shading ({@link Worker#serveShadeHit}), which may trace mirror rays through this method again.
      */
     public static Vec3 shadeRay(SceneTracer self, Ray ray, int depth) {
-        Worker worker = Worker.get();
-        Deque<SceneTracer> calls = TRACING.get();
-        calls.addLast(self);
+        return colorCall(self, TRACING.get(), self, m -> {
+            m.body.u8(Protocol.OP_SHADE_RAY);
+            m.target((StandIn) self);
+            Records.writeRay(m.body, ray);
+            m.body.i32(depth);
+        });
+    }
+
+    /**
+     * A call on {@code self}'s twin, written by {@code write}, whose answer is a color, asked at once
+     * with {@code frame} on {@code frames} while it runs (the worker's callbacks during the call find it
+     * there): the color, or what the student's code threw, rethrown.
+     */
+    private static <F> Vec3 colorCall(Object self, Deque<F> frames, F frame, java.util.function.Consumer<JudgeObjects.Message> write) {
+        frames.addLast(frame);
         Outcome outcome;
         try {
-            outcome = worker.call(m -> {
-                m.body.u8(Protocol.OP_SHADE_RAY);
-                m.target((StandIn) self);
-                Records.writeRay(m.body, ray);
-                m.body.i32(depth);
-            }, in -> {
-                int status = in.u8();
-                if (status == Protocol.THREW) {
-                    return Outcome.threw(ThrownData.read(in));
-                }
-                expect(status);
-                return Outcome.value(in.vec());
-            });
+            outcome = Worker.get().call(write, in -> returnedOrThrew(in, WireIn::vec));
         } finally {
-            calls.removeLast();
+            frames.removeLast();
         }
         outcome.rethrow(self);
         return (Vec3) outcome.value;
+    }
+
+    /** An answer that is a value ({@code value} reads it) or what the student's code threw. */
+    private static Outcome returnedOrThrew(WireIn in, java.util.function.Function<WireIn, Object> value) {
+        int status = in.u8();
+        if (status == Protocol.THREW) {
+            return Outcome.threw(ThrownData.read(in));
+        }
+        expect(status);
+        return Outcome.value(value.apply(in));
     }
 
     private static void expect(int status) {

@@ -243,7 +243,6 @@ final class Worker {
         Vec3 vector = in.vec();
         int depth = kind == Protocol.CB_RADIANCE ? in.i32() : 0;
         in.end();
-        JudgeObjects.Message reply = objects.new Message();
         boolean unoccluded = false;
         Vec3 radiance = null;
         try {
@@ -255,11 +254,10 @@ final class Worker {
         } catch (WorkerFailure e) {
             throw e;
         } catch (Throwable t) { // the judge's context threw: it goes back through the student's code
-            reply.body.u8(Protocol.THREW);
-            ThrownData.of(t, "ray.grading.judge.").write(reply.body);
-            process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+            sendThrown(t);
             return;
         }
+        JudgeObjects.Message reply = objects.new Message();
         reply.body.u8(Protocol.RETURNED);
         if (kind == Protocol.CB_UNOCCLUDED) {
             reply.body.bool(unoccluded);
@@ -283,18 +281,16 @@ final class Worker {
         Ray ray = Records.readRay(in);
         int depth = in.i32();
         in.end();
-        JudgeObjects.Message reply = objects.new Message();
         Vec3 color;
         try {
             color = tracer.shade(hit, ray, depth);
         } catch (WorkerFailure e) {
             throw e;
         } catch (Throwable t) { // the judge's shading threw: it goes back through the student's code
-            reply.body.u8(Protocol.THREW);
-            ThrownData.of(t, "ray.grading.judge.").write(reply.body);
-            process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+            sendThrown(t);
             return;
         }
+        JudgeObjects.Message reply = objects.new Message();
         reply.body.u8(Protocol.RETURNED).vec(color);
         process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
     }
@@ -306,7 +302,6 @@ final class Worker {
         IntersectionRecord record = new IntersectionRecord();
         Records.read(in, record, objects.reader());
         in.end();
-        JudgeObjects.Message reply = objects.new Message();
         IntersectionRecord before = new IntersectionRecord();
         before.set(record);
         double start = ray.start;
@@ -317,14 +312,21 @@ final class Worker {
         } catch (WorkerFailure e) {
             throw e;
         } catch (Throwable t) { // a judge-side surface's exception goes back through the student's code
-            reply.body.u8(Protocol.THREW);
-            ThrownData.of(t, "ray.grading.judge.").write(reply.body);
-            process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+            sendThrown(t);
             return;
         }
+        JudgeObjects.Message reply = objects.new Message();
         reply.body.u8(Protocol.RETURNED).bool(hit);
         Records.writeChanges(reply.body, Records.changes(before, record), record, reply);
         Records.writeRayChanges(reply.body, Records.rayChanges(start, end, ray), ray);
+        process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+    }
+
+    /** Answers a callback with what the judge's side threw, which goes back through the student's code. */
+    private void sendThrown(Throwable t) {
+        JudgeObjects.Message reply = objects.new Message();
+        reply.body.u8(Protocol.THREW);
+        ThrownData.of(t, "ray.grading.judge.").write(reply.body);
         process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
     }
 

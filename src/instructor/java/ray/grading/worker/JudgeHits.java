@@ -4,8 +4,6 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.grading.wire.Protocol;
 import ray.grading.wire.Records;
-import ray.grading.wire.ThrownData;
-import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.math.Vec3;
@@ -31,17 +29,7 @@ final class JudgeHits implements HitShading {
         Records.write(request, hit, objects);
         Records.writeRay(request, ray);
         request.i32(depth);
-        WireIn answer = link.callback(request);
-        objects.define(answer);
-        int status = answer.u8();
-        if (status == Protocol.THREW) {
-            ThrownData thrown = ThrownData.read(answer);
-            answer.end();
-            throw new JudgeSurface.JudgeSideThrew(thrown);
-        }
-        if (status != Protocol.RETURNED) {
-            throw new WireError("a callback answer of status " + status);
-        }
+        WireIn answer = link.ask(request);
         Vec3 color = answer.vec();
         answer.end();
         return color;

@@ -6,6 +6,7 @@ import java.io.OutputStream;
 import java.io.UncheckedIOException;
 import ray.grading.wire.Frames;
 import ray.grading.wire.Protocol;
+import ray.grading.wire.ThrownData;
 import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
@@ -102,6 +103,26 @@ final class JudgeLink {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    /**
+     * Asks the judge something during a call ({@link #callback}) and returns its answer, its
+     * definitions taken in and read past the status: what the judge's side returned. What it threw is
+     * thrown here, to pass through the student's code as it was ({@link JudgeSurface.JudgeSideThrew}).
+     */
+    WireIn ask(WireOut request) {
+        WireIn answer = callback(request);
+        objects.define(answer);
+        int status = answer.u8();
+        if (status == Protocol.THREW) {
+            ThrownData thrown = ThrownData.read(answer);
+            answer.end();
+            throw new JudgeSurface.JudgeSideThrew(thrown);
+        }
+        if (status != Protocol.RETURNED) {
+            throw new WireError("a callback answer of status " + status);
+        }
+        return answer;
     }
 
     private void send(int type, WireOut message) throws IOException {

@@ -5,8 +5,6 @@ import java.util.List;
 import ray.IntersectionRecord;
 import ray.grading.wire.Protocol;
 import ray.grading.wire.Records;
-import ray.grading.wire.ThrownData;
-import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.math.Vec3;
@@ -53,7 +51,7 @@ final class JudgeShading implements ShadingContext {
         return radiance;
     }
 
-    /** Asks the judge and returns its answer past the status, or throws what the judge's context threw. */
+    /** Asks the judge and returns its answer past the status ({@link JudgeLink#ask}). */
     private WireIn ask(int kind, IntersectionRecord hit, Vec3 vector, int depth) {
         WireOut request = new WireOut();
         request.u8(kind).bool(hit == given);
@@ -62,17 +60,6 @@ final class JudgeShading implements ShadingContext {
         if (kind == Protocol.CB_RADIANCE) {
             request.i32(depth);
         }
-        WireIn answer = link.callback(request);
-        objects.define(answer);
-        int status = answer.u8();
-        if (status == Protocol.THREW) {
-            ThrownData thrown = ThrownData.read(answer);
-            answer.end();
-            throw new JudgeSurface.JudgeSideThrew(thrown);
-        }
-        if (status != Protocol.RETURNED) {
-            throw new WireError("a callback answer of status " + status);
-        }
-        return answer;
+        return link.ask(request);
     }
 }

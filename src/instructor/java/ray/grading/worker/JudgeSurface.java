@@ -5,7 +5,6 @@ import ray.Ray;
 import ray.grading.wire.Protocol;
 import ray.grading.wire.Records;
 import ray.grading.wire.ThrownData;
-import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.math.Bounds;
@@ -44,22 +43,12 @@ final class JudgeSurface extends Surface {
         request.u8(Protocol.CB_INTERSECT).i32(handle);
         Records.writeRay(request, ray);
         Records.write(request, out, objects);
-        WireIn answer = link.callback(request);
-        objects.define(answer);
-        int status = answer.u8();
-        if (status == Protocol.RETURNED) {
-            boolean hit = answer.bool();
-            Records.readChanges(answer, out, objects);
-            Records.readRayChanges(answer, ray);
-            answer.end();
-            return hit;
-        }
-        if (status == Protocol.THREW) {
-            ThrownData thrown = ThrownData.read(answer);
-            answer.end();
-            throw new JudgeSideThrew(thrown);
-        }
-        throw new WireError("a callback answer of status " + status);
+        WireIn answer = link.ask(request);
+        boolean hit = answer.bool();
+        Records.readChanges(answer, out, objects);
+        Records.readRayChanges(answer, ray);
+        answer.end();
+        return hit;
     }
 
     @Override
