@@ -230,16 +230,23 @@ final class Worker {
      * Runs the shadow test or traces the mirror ray that the student's shade asked its context for,
      * with the context of the shade call running ({@link StudentCalls#shading}), and sends back the
      * answer. A hit the student's code passes is the one the call gave when the worker says so (then
-     * the judge's own record, with whatever the student's code changed in it), else a record of its own.
+     * the judge's own record, with whatever the student's code changed in it), null, or a record of its own.
      */
     void serveShading(int kind, WireIn in) {
         StudentCalls.ShadeCall call = StudentCalls.shading();
         if (call == null) {
             throw new WireError("a shading callback outside a shade call");
         }
-        boolean given = in.bool();
-        IntersectionRecord hit = given ? call.hit : new IntersectionRecord();
-        Records.read(in, hit, objects.reader());
+        int which = in.u8();
+        IntersectionRecord hit;
+        if (which == Protocol.HIT_NULL) {
+            hit = null;
+        } else if (which == Protocol.HIT_GIVEN || which == Protocol.HIT_OTHER) {
+            hit = which == Protocol.HIT_GIVEN ? call.hit : new IntersectionRecord();
+            Records.read(in, hit, objects.reader());
+        } else {
+            throw new WireError("a shading callback's hit of kind " + which);
+        }
         Vec3 vector = in.vec();
         int depth = kind == Protocol.CB_RADIANCE ? in.i32() : 0;
         in.end();

@@ -89,12 +89,17 @@ public final class Protocol {
     /** A judge-side surface's intersect: its handle, the ray, the record. */
     public static final int CB_INTERSECT = 1;
     /**
-     * The shading context's shadow test: whether the hit is the one the call gave (then the judge
-     * tests its own), the hit as a record, and the light's position; the answer is a boolean.
+     * The shading context's shadow test: which hit the student's code passed ({@link #HIT_NULL},
+     * {@link #HIT_GIVEN}: the one the call gave, then the judge tests its own, or {@link #HIT_OTHER}),
+     * the hit as a record unless null, and the light's position; the answer is a boolean.
      */
     public static final int CB_UNOCCLUDED = 2;
     /** The shading context's mirror radiance: the hit as for {@link #CB_UNOCCLUDED}, the direction and the depth; the answer a vector. */
     public static final int CB_RADIANCE = 3;
+    /** A shading callback's hit: null, the very record the shade call gave, or another record. */
+    public static final int HIT_NULL = 0;
+    public static final int HIT_GIVEN = 1;
+    public static final int HIT_OTHER = 2;
     /** A ray tracer's shading of a hit: the hit (a record), the ray and the depth; the answer a vector. */
     public static final int CB_SHADE_HIT = 4;
 

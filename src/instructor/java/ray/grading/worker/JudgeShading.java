@@ -54,8 +54,10 @@ final class JudgeShading implements ShadingContext {
     /** Asks the judge and returns its answer past the status ({@link JudgeLink#ask}). */
     private WireIn ask(int kind, IntersectionRecord hit, Vec3 vector, int depth) {
         WireOut request = new WireOut();
-        request.u8(kind).bool(hit == given);
-        Records.write(request, hit, objects);
+        request.u8(kind).u8(hit == null ? Protocol.HIT_NULL : hit == given ? Protocol.HIT_GIVEN : Protocol.HIT_OTHER);
+        if (hit != null) {
+            Records.write(request, hit, objects);
+        }
         request.vec(vector);
         if (kind == Protocol.CB_RADIANCE) {
             request.i32(depth);
