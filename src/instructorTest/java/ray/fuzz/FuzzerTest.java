@@ -90,7 +90,7 @@ public class FuzzerTest {
     @Test
     public void theCorpusIsEveryShippedSceneWithItsMeshesAndTexturesAndNoReferenceRender() {
         Corpus corpus = Corpus.of(Path.of("scenes"));
-        assertEquals(21, corpus.scenes.size());
+        assertEquals(24, corpus.scenes.size());
         assertEquals(java.util.List.of(Path.of("meshes/torus-flat.obj")), corpus.meshes.get(Path.of("mesh-flat.xml")));
         assertEquals(java.util.List.of(Path.of("meshes/icosphere-room.obj")),
                 corpus.meshes.get(Path.of("hard/inside-closed-mesh.xml")));
