@@ -6,6 +6,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.camera.Camera;
 import ray.math.Vec3;
+import ray.render.TaskProbes.Part;
 import ray.scene.Scene;
 
 /**
@@ -80,9 +81,9 @@ public final class PixelTrace {
         if (value.samples == 1 && centerRadiance != null && !sameUpToRounding(centerRadiance, value.radiance)) {
             out.println(Fmt.row("  ", "!", "the trace computed " + Fmt.vec(centerRadiance) + " for the center ray; the renderer's"
                     + " value above is the one in the image"
-                    + (ray.render.TaskProbes.Part.RAY_TRACER.isStudents()
+                    + (Part.RAY_TRACER.isStudents()
                             ? " (the renderer gets every ray's color from RayTracer.shadeRay: the background on a miss, else the"
-                                    + " closest hit shaded; see TODO(Task " + ray.render.TaskProbes.Part.RAY_TRACER.task() + "))"
+                                    + " closest hit shaded; see TODO(Task " + Part.RAY_TRACER.task() + "))"
                             : "")));
         }
         double exposure = scene.getExposure();

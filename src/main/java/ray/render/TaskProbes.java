@@ -410,7 +410,7 @@ public final class TaskProbes {
                 double v = 1 - 0.5 * row;
                 Vec3 expected = image.get(column, 1 - row);
                 Vec3 color = texture.getTexColor(u, v);
-                stub &= color != null && color.x == 0 && color.y == 0 && color.z == 0;
+                stub &= isBlack(color);
                 if (problem == null && (color == null || !close(color, expected))) {
                     problem = texture.getClass().getSimpleName() + ".getTexColor(" + u + ", " + v + ") on a 2 × 2 image returned "
                             + color + "; expected texel (" + column + ", " + row + ") counted from the top-left, " + expected;

@@ -24,8 +24,9 @@ import ray.surface.Surface;
  * first, each class's fields by name. A surface's shader stays behind (no student method uses it,
  * and shaders are not data), and so does a shader's texture: each shade call carries the texture's
  * color at its hit instead, looked up on the judge's side ({@link Protocol#OP_SHADE}); and so does a
- * ray tracer's shading of hits, which the worker asks back ({@link Protocol#CB_SHADE_HIT}). A field of a type this class cannot send fails at once, so a framework
- * change that adds one is noticed by the grader's own tests.
+ * ray tracer's shading of hits, which the worker asks back ({@link Protocol#CB_SHADE_HIT}). A field
+ * of a type this class cannot send fails at once, so a framework change that adds one is noticed by
+ * the grader's own tests.
  */
 public final class FrameworkFields {
     private static final Map<Class<?>, List<Field>> FIELDS = new ConcurrentHashMap<>();

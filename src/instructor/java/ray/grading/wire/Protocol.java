@@ -9,8 +9,8 @@ package ray.grading.wire;
  * <p>Judge to worker: {@link #CALL} (definitions, then one call), {@link #BATCH} (definitions, then
  * many calls whose answers may come together) and {@link #CALLBACK_ANSWER}. Worker to judge:
  * {@link #READY} once started, {@link #ANSWER}, {@link #BATCH_ANSWER}, {@link #CALLBACK} (the
- * student's code called a judge-side object during a call: a group's child, or a shader's context) and {@link #EXITING}
- * (the student's code called System.exit during a call).
+ * student's code called a judge-side object during a call: a group's child, a shader's context, a
+ * hit to shade) and {@link #EXITING} (the student's code called System.exit during a call).
  */
 public final class Protocol {
     private Protocol() {
