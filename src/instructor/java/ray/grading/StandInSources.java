@@ -33,7 +33,7 @@ import javax.tools.ToolProvider;
 final class StandInSources {
     /** The student methods the judge can forward, by name and parameter count, and StudentCalls' method for each. */
     static final Map<String, String> FORWARDS = Map.of("intersect/2", "intersect", "generateRay/2", "generateRay", "getTexColor/2", "texColor",
-            "shade/4", "shade", "shadeRay/2", "shadeRay");
+            "shade/4", "shade", "shadeRay/2", "shadeRay", "value/4", "brdfValue");
 
     private StandInSources() {
     }

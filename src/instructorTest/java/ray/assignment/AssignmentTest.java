@@ -98,21 +98,25 @@ public class AssignmentTest {
     @Test
     public void eachMistakeInAnAssignmentFileIsOneLineNamingTheFileAndWhatWasExpected() {
         refused("tasks = sphere, spheres\n", Map.of(),
-                "assignment.properties: there is no task \"spheres\"; the tasks are camera-rays, ray-color, group, sphere, lighting, triangle, textures, cylinder");
+                "assignment.properties: there is no task \"spheres\"; the tasks are camera-rays, ray-color, group, sphere, lighting, brdfs, triangle, textures, cylinder");
         refused("tasks = sphere, sphere\n", Map.of(), "assignment.properties: the task sphere is chosen twice");
         refused("tasks = sphere\nhint = goal\n", Map.of(),
                 "assignment.properties: unknown key \"hint\"; expected preset, tasks, extraCredit, hints, course, hints.ID or points.ID");
         refused("preset = course-2042\n", Map.of(),
-                "assignment.properties: preset = course-2042 is no preset; the presets are intersections, course-2017");
-        refused("tasks = sphere\ncourse = 2019\n", Map.of(),
-                "assignment.properties: course = 2019; ray1 renders with the course's conventions of 2017");
+                "assignment.properties: preset = course-2042 is no preset; the presets are intersections, course-2017, course-2019");
+        refused("tasks = sphere\ncourse = 2018\n", Map.of(),
+                "assignment.properties: course = 2018; ray1 renders with the course's conventions of 2017, 2019");
+        refused("tasks = sphere, lighting\ncourse = 2019\n", Map.of(), "assignment.properties: the task lighting is written by the course's"
+                + " 2017 conventions, and this assignment's course is 2019; choose it with course = 2017");
+        refused("tasks = sphere, brdfs\n", Map.of(), "assignment.properties: the task brdfs is written by the course's"
+                + " 2019 conventions, and this assignment's course is 2017; choose it with course = 2019");
         refused("tasks = cylinder\nextraCredit = cylinder\n", Map.of(),
                 "assignment.properties: every chosen task is extra credit; at least one must be required");
         refused("tasks =\n", Map.of(), "assignment.properties: no tasks; give `tasks = id, id, …` from camera-rays, ray-color, group,"
-                + " sphere, lighting, triangle, textures, cylinder");
+                + " sphere, lighting, brdfs, triangle, textures, cylinder");
         refused("preset = intersections\n", Map.of("tasks", "sphere,bvh"),
                 "assignment.properties with tasks given: there is no task \"bvh\"; the tasks are camera-rays, ray-color, group, sphere,"
-                        + " lighting, triangle, textures, cylinder");
+                        + " lighting, brdfs, triangle, textures, cylinder");
     }
 
     @Test
@@ -126,7 +130,7 @@ public class AssignmentTest {
         assertEquals(HintLevel.GOAL, read("preset = intersections\n", Map.of("hints", "goal")).hints("group"));
         refused("tasks = sphere\nhints = lots\n", Map.of(), "assignment.properties: hints = lots; expected goal, steps or formulas");
         refused("tasks = sphere\nhints.spheres = goal\n", Map.of(), "assignment.properties: hints.spheres names no task; the tasks are"
-                + " camera-rays, ray-color, group, sphere, lighting, triangle, textures, cylinder");
+                + " camera-rays, ray-color, group, sphere, lighting, brdfs, triangle, textures, cylinder");
     }
 
     @Test
@@ -170,7 +174,7 @@ public class AssignmentTest {
             Assignment.resolve(project, "nowhere.properties", Map.of());
             fail();
         } catch (AssignmentException e) {
-            assertEquals("-Passignment=nowhere.properties: no such preset or file; the presets are intersections, course-2017", e.getMessage());
+            assertEquals("-Passignment=nowhere.properties: no such preset or file; the presets are intersections, course-2017, course-2019", e.getMessage());
         }
     }
 

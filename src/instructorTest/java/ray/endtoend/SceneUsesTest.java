@@ -3,6 +3,7 @@ package ray.endtoend;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.Test;
@@ -33,15 +34,23 @@ public class SceneUsesTest {
                 BasicChecks.tasksOf(SceneLoader.load(RenderScenes.fileOf("one-sphere"))));
     }
 
-    /** Every graded render's own task is among those its scene uses (under course-2017, which chooses every task). */
+    /**
+     * Every graded render's own task is among those its scene uses, under the course preset that
+     * chooses the task (course-2017 or course-2019, which together choose every task).
+     */
     @Test
     public void everyRendersOwnTaskIsAmongItsScenesTasks() throws Exception {
         ray.assignment.Assignment before = ray.assignment.Assignment.current();
-        ray.assignment.Assignment.use(ray.assignment.Assignment.preset("course-2017"));
         try {
-            for (Map.Entry<String, ray.assignment.Task> e : RenderScenes.tasksOfScenes().entrySet()) {
-                Set<StudentTask> uses = BasicChecks.tasksOf(SceneLoader.load(RenderScenes.fileOf(e.getKey())));
-                assertTrue(e.getKey() + " uses " + uses, uses.contains(StudentTask.of(e.getValue().id())));
+            for (String preset : List.of("course-2017", "course-2019")) {
+                ray.assignment.Assignment.use(ray.assignment.Assignment.preset(preset));
+                for (Map.Entry<String, ray.assignment.Task> e : RenderScenes.tasksOfScenes().entrySet()) {
+                    if (ray.assignment.Assignment.current().number(e.getValue().id()) == 0) {
+                        continue;
+                    }
+                    Set<StudentTask> uses = BasicChecks.tasksOf(RenderScenes.load(RenderScenes.fileOf(e.getKey())));
+                    assertTrue(preset + ": " + e.getKey() + " uses " + uses, uses.contains(StudentTask.of(e.getValue().id())));
+                }
             }
         } finally {
             ray.assignment.Assignment.use(before);

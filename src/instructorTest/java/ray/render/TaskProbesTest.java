@@ -4,6 +4,7 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertNull;
 import static org.junit.Assert.assertTrue;
+import static org.junit.Assume.assumeTrue;
 
 import java.net.URLClassLoader;
 import java.nio.file.Path;
@@ -16,9 +17,13 @@ import java.util.Set;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
 import org.junit.AfterClass;
+import org.junit.Before;
 import org.junit.BeforeClass;
 import org.junit.ClassRule;
 import org.junit.Test;
+import org.junit.runner.RunWith;
+import org.junit.runners.Parameterized;
+import org.junit.runners.Parameterized.Parameters;
 import org.junit.rules.TemporaryFolder;
 import ray.assignment.Assignment;
 import ray.render.TaskProbes.Part;
@@ -30,6 +35,7 @@ import ray.variants.StubBuild;
  * is found (and nothing else), code that throws or takes too long is no stub, and the line
  * {@code ray1 render} ends with says which tasks are stubs and where to start.
  */
+@RunWith(Parameterized.class)
 public class TaskProbesTest {
     @ClassRule
     public static final TemporaryFolder FOLDER = new TemporaryFolder();
@@ -37,23 +43,46 @@ public class TaskProbesTest {
     /** Each student file's handout stub, compiled alone into a class folder of its own. */
     private static final Map<Part, Path> STUB_CLASSES = new java.util.EnumMap<>(Part.class);
 
-    /** The preset that chooses every task of the table, so that every part is the students'. */
-    private static final String EVERY_TASK = "course-2017";
+    /** The presets that together choose every task of the table: each part is the students' under one of them. */
+    @Parameters(name = "{0}")
+    public static List<Object[]> presets() {
+        return List.of(new Object[] {"course-2017"}, new Object[] {"course-2019"});
+    }
+
     private static Assignment before;
+    /** The preset this run's tests probe under. */
+    private final String preset;
+
+    public TaskProbesTest(String preset) {
+        this.preset = preset;
+    }
 
     @BeforeClass
     public static void compileTheStubs() throws Exception {
         before = Assignment.current();
-        Assignment.use(Assignment.preset(EVERY_TASK));
         for (Part part : Part.values()) {
             STUB_CLASSES.put(part, StubBuild.compile(Map.of(part.file, StubBuild.stubOf(part.file)),
                     FOLDER.getRoot().toPath().resolve("stub-" + part.className)));
         }
     }
 
+    /** The preset of the test running now, for the child loaders' assignment. */
+    private static String runPreset;
+
+    @Before
+    public void useThePreset() {
+        runPreset = preset;
+        Assignment.use(Assignment.preset(preset));
+    }
+
     @AfterClass
     public static void restoreTheAssignment() {
         Assignment.use(before);
+    }
+
+    /** The parts that are the students' under this run's preset. */
+    private static List<Part> studentsParts() {
+        return Arrays.stream(Part.values()).filter(Part::isStudents).collect(Collectors.toList());
     }
 
     @Test
@@ -75,15 +104,17 @@ public class TaskProbesTest {
                     .collect(Collectors.toList());
             assertEquals(task.label(), task.files, files);
         }
-        assertEquals(Part.values().length, StudentTask.values().stream().mapToInt(t -> t.files.size()).sum());
+        assertEquals(studentsParts().size(), StudentTask.values().stream().mapToInt(t -> t.files.size()).sum());
         for (Part part : Part.values()) {
             assertTrue(part.file, part.file.endsWith("/" + part.className + ".java"));
+            assertTrue(part + " is the students' under one of the presets", presets().stream()
+                    .anyMatch(p -> Assignment.preset((String) p[0]).number(part.taskId) > 0));
         }
     }
 
     @Test
     public void eachStubIsFoundAndNothingElse() throws Exception {
-        for (Part part : Part.values()) {
+        for (Part part : studentsParts()) {
             assertEquals("with the stub of " + part.file, Set.of(part.name()), stubsWith(List.of(STUB_CLASSES.get(part))));
         }
     }
@@ -108,7 +139,8 @@ public class TaskProbesTest {
                 assertEquals(line, other.equals(task), named.contains("Task " + other.number + " ("));
             }
         }
-        Set<String> all = Arrays.stream(Part.values()).map(Part::name).collect(Collectors.toCollection(TreeSet::new));
+        // Every stub at once (a part the preset does not give students is solved, and never probed).
+        Set<String> all = studentsParts().stream().map(Part::name).collect(Collectors.toCollection(TreeSet::new));
         assertEquals(all, stubsWith(new ArrayList<>(STUB_CLASSES.values())));
     }
 
@@ -146,11 +178,17 @@ public class TaskProbesTest {
 
     @Test
     public void theLineNamesTheStubsAndWhereToStart() {
+        for (Part part : studentsParts()) {
+            String line = TaskProbes.stillStubsLine(EnumSet.of(part));
+            assertTrue(line, line.contains(part.file) && line.contains("TODO(Task " + part.task() + ")"));
+            assertTrue(line, line.chars().allMatch(c -> c >= ' ' && c < 127));
+        }
+        assumeTrue("the lines below number the tasks as course-2017 does", preset.equals("course-2017"));
         // Numbered as course-2017 numbers them: cameras, ray color, group, sphere, lighting, triangle, textures, cylinder.
         assertEquals("Still stubs: Task 1 (Camera rays), Task 2 (Ray color), Task 3 (Group), Task 4 (Sphere), Task 5 (Lighting),"
                 + " Task 6 (Triangle), Task 7 (Textures), Task 8 (Cylinder, extra credit). Start with Task 1: the TODO(Task 1) comments in"
                 + " src/main/java/ray/camera/PerspectiveCamera.java and OrthographicCamera.java (see docs/assignment.md).",
-                TaskProbes.stillStubsLine(EnumSet.allOf(Part.class)));
+                TaskProbes.stillStubsLine(EnumSet.copyOf(studentsParts())));
         // After the cameras, the table of tasks' order (pictures earliest) puts the ray's color, then the group.
         assertEquals("Still stubs: Task 2 (Ray color), Task 3 (Group), Task 4 (Sphere), Task 6 (Triangle). Start with Task 2: the"
                 + " TODO(Task 2) comment in src/main/java/ray/render/RayTracer.java (see docs/assignment.md).",
@@ -170,11 +208,6 @@ public class TaskProbesTest {
         assertEquals("Still a stub: Task 8 (Cylinder, extra credit). For the extra credit: the TODO(Task 8) comment in"
                 + " src/main/java/ray/surface/Cylinder.java (see docs/assignment.md).",
                 TaskProbes.stillStubsLine(EnumSet.of(Part.CYLINDER)));
-        for (Part part : Part.values()) {
-            String line = TaskProbes.stillStubsLine(EnumSet.of(part));
-            assertTrue(line, line.contains(part.file) && line.contains("TODO(Task " + part.task() + ")"));
-            assertTrue(line, line.chars().allMatch(c -> c >= ' ' && c < 127));
-        }
     }
 
     /** The names of the parts that {@link TaskProbes#stubs()} finds with {@code folders}' classes in place of the solution's. */
@@ -200,10 +233,10 @@ public class TaskProbesTest {
         }
     }
 
-    /** The loader's TaskProbes, its assignment set to {@link #EVERY_TASK} as this JVM's is. */
+    /** The loader's TaskProbes, its assignment set to this JVM's (the run's preset). */
     private static Class<?> probesUnderEveryTask(URLClassLoader loader) throws Exception {
         Class<?> assignment = loader.loadClass(Assignment.class.getName());
-        assignment.getMethod("use", assignment).invoke(null, assignment.getMethod("preset", String.class).invoke(null, EVERY_TASK));
+        assignment.getMethod("use", assignment).invoke(null, assignment.getMethod("preset", String.class).invoke(null, runPreset));
         return loader.loadClass(TaskProbes.class.getName());
     }
 

@@ -36,7 +36,7 @@ public final class Assignment {
     public static final String PROJECT_FILE = "assignment.properties";
     public static final String DEFAULT_PRESET = "intersections";
     /** The course conventions ray1 renders with. */
-    public static final Set<String> COURSES = Set.of("2017");
+    public static final Set<String> COURSES = Set.of("2017", "2019");
     private static final List<String> KEYS = List.of("preset", "tasks", "extraCredit", "hints", "course");
     /** A task's own hint level: {@code hints.ID = LEVEL}. */
     private static final String TASK_HINTS = "hints.";
@@ -90,7 +90,7 @@ public final class Assignment {
         return a;
     }
 
-    /** A ready-made assignment by name ("intersections", "course-2017"). */
+    /** A ready-made assignment by name ("intersections", "course-2017", "course-2019"). */
     public static Assignment preset(String name) {
         return preset(name, Map.of());
     }
@@ -102,7 +102,7 @@ public final class Assignment {
 
     /** The names of the ready-made assignments. */
     public static List<String> presetNames() {
-        return List.of("intersections", "course-2017");
+        return List.of("intersections", "course-2017", "course-2019");
     }
 
     /**
@@ -240,6 +240,12 @@ public final class Assignment {
         String course = p.getProperty("course", "2017").trim();
         if (!COURSES.contains(course)) {
             throw new AssignmentException(where + ": course = " + course + "; ray1 renders with the course's conventions of " + String.join(", ", new TreeSet<>(COURSES)));
+        }
+        for (Task task : tasks) {
+            if (task.course() != null && !task.course().equals(course)) {
+                throw new AssignmentException(where + ": the task " + task.id() + " is written by the course's " + task.course()
+                        + " conventions, and this assignment's course is " + course + "; choose it with course = " + task.course());
+            }
         }
         return new Assignment(table, tasks, extra, hints, taskHints, taskPoints, course);
     }

@@ -19,6 +19,7 @@ public final class Task {
     private final double points;
     private final boolean extraCredit;
     private final List<String> needs;
+    private final String course;
 
     /**
      * @param id          the stable id, as assignment files and {@code -Ptask} name it ("sphere")
@@ -31,9 +32,10 @@ public final class Task {
      *                    proportion to their {@code @Points}; 0 leaves the tests' own points as they are
      * @param extraCredit whether its tests are extra credit where the assignment does not say
      * @param needs       the ids of the tasks it builds on
+     * @param course      the course conventions it belongs to ("2019" for the BRDFs), or null for a task of every course
      */
     public Task(String id, String title, List<String> files, List<String> tests, List<String> scenes, double points, boolean extraCredit,
-            List<String> needs) {
+            List<String> needs, String course) {
         this.id = id;
         this.title = title;
         this.files = List.copyOf(files);
@@ -42,6 +44,16 @@ public final class Task {
         this.points = points;
         this.extraCredit = extraCredit;
         this.needs = List.copyOf(needs);
+        this.course = course;
+    }
+
+    /**
+     * The course whose conventions the task belongs to ("2017": the light loops, "2019": the BRDFs),
+     * or null when it is the same under every course (the geometry, the cameras). An assignment of
+     * another course cannot choose it, and its scenes are that course's (scenes-2019/ for 2019).
+     */
+    public String course() {
+        return course;
     }
 
     public String id() {

@@ -117,7 +117,13 @@ public final class TaskTable {
                 throw new AssignmentException(name + ": " + id + ".extraCredit is \"" + extra + "\"; expected true or false");
             }
             double points = positiveOrZero(p.getProperty(id + ".points", "0"), name + ": " + id + ".points");
-            tasks.add(new Task(id, title, files, tests, list(p.getProperty(id + ".scenes")), points, Boolean.parseBoolean(extra), needs));
+            String course = p.getProperty(id + ".course");
+            if (course != null && !Assignment.COURSES.contains(course.trim())) {
+                throw new AssignmentException(name + ": " + id + ".course is \"" + course.trim() + "\"; expected one of "
+                        + String.join(", ", new java.util.TreeSet<>(Assignment.COURSES)) + ", or no such line for a task of every course");
+            }
+            tasks.add(new Task(id, title, files, tests, list(p.getProperty(id + ".scenes")), points, Boolean.parseBoolean(extra), needs,
+                    course == null ? null : course.trim()));
         }
         for (String key : p.stringPropertyNames()) {
             String owner = key.contains(".") ? key.substring(0, key.indexOf('.')) : null;

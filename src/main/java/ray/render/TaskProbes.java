@@ -18,11 +18,14 @@ import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
 import ray.image.Image;
 import ray.math.Vec3;
+import ray.shading.Brdf;
 import ray.shading.ClampTexture;
 import ray.shading.DirectLighting;
 import ray.shading.Lambertian;
+import ray.shading.LambertianBrdf;
 import ray.shading.Light;
 import ray.shading.Phong;
+import ray.shading.PhongBrdf;
 import ray.shading.RepeatTexture;
 import ray.shading.ShadingContext;
 import ray.shading.Texture;
@@ -62,6 +65,8 @@ public final class TaskProbes {
         CLAMP_TEXTURE("ClampTexture"),
         LAMBERTIAN("Lambertian"),
         PHONG("Phong"),
+        LAMBERTIAN_BRDF("LambertianBrdf"),
+        PHONG_BRDF("PhongBrdf"),
         CYLINDER("Cylinder");
 
         /** Its task's id in the table. */
@@ -146,6 +151,12 @@ public final class TaskProbes {
                     phong.setSpecularColor(new Vec3(1, 1, 1));
                     phong.setExponent(10);
                     return lighting(phong, new Vec3(1.5, 1.25, 2));
+                case LAMBERTIAN_BRDF:
+                    // ρd/π, whatever the directions.
+                    return brdf(new LambertianBrdf(), new Vec3(0.5 / Math.PI, 0.25 / Math.PI, 1 / Math.PI));
+                case PHONG_BRDF:
+                    // ρd/π + ks · (n·h)^p with l = v = h = n: ρd/π + ks.
+                    return brdf(new PhongBrdf(new Vec3(1, 1, 1), 10), new Vec3(0.5 / Math.PI + 1, 0.25 / Math.PI + 1, 1 / Math.PI + 1));
                 default:
                     throw new AssertionError(part);
             }
@@ -441,6 +452,20 @@ public final class TaskProbes {
                 : name + " returned " + above + " for a point facing a light of intensity (4, 4, 4) straight above it at distance 2 (kd = "
                         + "(0.5, 0.25, 1)" + (shader instanceof Phong ? ", ks = (1, 1, 1), p = 10, seen from straight above" : "")
                         + ", nothing in the way); expected " + expected;
+        return new Finding(stub, problem);
+    }
+
+    /** A BRDF's value for ρd = (0.5, 0.25, 1) with light and eye along the normal, and with both slanted. */
+    private static Finding brdf(Brdf brdf, Vec3 expected) {
+        Vec3 rhoD = new Vec3(0.5, 0.25, 1);
+        Vec3 n = new Vec3(0, 0, 1);
+        Vec3 head = brdf.value(rhoD, n, n, n);
+        Vec3 slanted = brdf.value(rhoD, n, new Vec3(0.6, 0, 0.8), new Vec3(0, 0.6, 0.8));
+        boolean stub = isBlack(head) && isBlack(slanted);
+        String problem = head != null && close(head, expected) ? null
+                : brdf.getClass().getSimpleName() + ".value returned " + head + " for ρd = (0.5, 0.25, 1)"
+                        + (brdf instanceof PhongBrdf ? ", ks = (1, 1, 1), p = 10" : "") + " with the light and the eye along the normal; expected "
+                        + expected;
         return new Finding(stub, problem);
     }
 

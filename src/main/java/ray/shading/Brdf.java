@@ -17,4 +17,8 @@ public interface Brdf {
 
     /** The formula, as {@code ray1 trace} writes it: "ρd/π". */
     String formula();
+
+    /** Checks nothing: a BRDF's parameters come ready from its shader. */
+    default void complete() {
+    }
 }

@@ -12,6 +12,7 @@ import ray.render.TaskProbes;
 import ray.render.TaskProbes.Part;
 import ray.scene.Scene;
 import ray.shading.Effect;
+import ray.shading.ReflectionShader;
 import ray.surface.Surface;
 import ray.testing.StudentTask;
 
@@ -44,9 +45,10 @@ final class BasicChecks {
         if (plan.runs(Effect.TEXTURES)) {
             ids.add("textures");
         }
-        // The light loops of the Lambertian and Phong shaders, which run when the scene has a light.
+        // The light loops of the Lambertian and Phong shaders (2017), or their BRDFs (2019), which run
+        // when the scene has a light.
         if (plan.runs(Effect.LIGHTING)) {
-            ids.add("lighting");
+            ids.add(usesBrdfs(scene) ? "brdfs" : "lighting");
         }
         Set<StudentTask> tasks = new LinkedHashSet<>();
         for (StudentTask task : StudentTask.values()) {
@@ -55,6 +57,23 @@ final class BasicChecks {
             }
         }
         return tasks;
+    }
+
+    /** Whether the scene was loaded by the 2019 conventions, whose shaders evaluate BRDFs. */
+    private static boolean usesBrdfs(Scene scene) {
+        return shadedByABrdf(scene.getSurfaces());
+    }
+
+    private static boolean shadedByABrdf(Surface surface) {
+        if (surface.getShader() instanceof ReflectionShader) {
+            return true;
+        }
+        for (Surface child : surface.children()) {
+            if (shadedByABrdf(child)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static void addTasksOf(Surface surface, Set<String> ids) {

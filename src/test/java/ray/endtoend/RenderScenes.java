@@ -15,11 +15,16 @@ import ray.render.RenderResult;
 import ray.render.Renderer;
 import ray.scene.Scene;
 import ray.scene.SceneFiles;
+import ray.scene.SceneLoader;
+import ray.scene.SceneOptions;
+import ray.shading.Course;
 import ray.testing.ProjectFolder;
 
 /**
- * The shipped scenes (every *.xml under scenes/, except the reference folder), the task each one's
- * graded render test counts toward, and full-size renders of them.
+ * The shipped scenes (every *.xml under scenes/, and under scenes-2019/ for the tasks of the course's
+ * 2019 conventions, except the reference folders), the task each one's graded render test counts
+ * toward, and full-size renders of them. A scene renders by the conventions of its folder: scenes/
+ * by 2017's, scenes-2019/ by 2019's, whatever the assignment's course.
  */
 final class RenderScenes {
     /**
@@ -29,6 +34,26 @@ final class RenderScenes {
      */
     static Path folder() {
         return ProjectFolder.resolve("scenes");
+    }
+
+    /** The folder of the scenes of {@code course}'s conventions: scenes/ for 2017, scenes-2019/ for 2019. */
+    static Path folder(Course course) {
+        return course == Course.Y2017 ? folder() : ProjectFolder.resolve("scenes-" + course.year);
+    }
+
+    /** The course whose conventions a scene file under {@link #folder(Course)} renders by. */
+    static Course courseOf(Path sceneFile) {
+        for (Course course : Course.values()) {
+            if (course != Course.Y2017 && sceneFile.toAbsolutePath().normalize().startsWith(folder(course))) {
+                return course;
+            }
+        }
+        return Course.Y2017;
+    }
+
+    /** A scene file loaded by the conventions of its folder ({@link #courseOf}), its data beside it. */
+    static Scene load(Path sceneFile) {
+        return SceneLoader.load(sceneFile, SceneOptions.of(courseOf(sceneFile), null));
     }
 
     /** The reference renders, made by the instructor's solution ({@code gradle references}). */
@@ -59,18 +84,30 @@ final class RenderScenes {
         return SceneFiles.under(folder(), referenceFolder());
     }
 
-    /** The scene file called {@code name}.xml anywhere under scenes/, or scenes/NAME.xml when there is none (to be reported missing). */
+    /** Every scene file under {@code course}'s folder, sorted, except any under its reference folder. */
+    static List<Path> sceneFiles(Course course) {
+        Path folder = folder(course);
+        return java.nio.file.Files.isDirectory(folder) ? SceneFiles.under(folder, folder.resolve("reference")) : List.of();
+    }
+
+    /**
+     * The scene file called {@code name}.xml anywhere under scenes/ or another course's folder, or
+     * scenes/NAME.xml when there is none (to be reported missing).
+     */
     static Path fileOf(String name) {
-        for (Path p : sceneFiles()) {
-            if (SceneFiles.nameOf(p).equals(name)) {
-                return p;
+        for (Course course : Course.values()) {
+            for (Path p : sceneFiles(course)) {
+                if (SceneFiles.nameOf(p).equals(name)) {
+                    return p;
+                }
             }
         }
         return folder().resolve(name + ".xml");
     }
 
+    /** The reference image of the scene {@code name}: in the reference folder of its course's folder. */
     static Path referenceOf(String name) {
-        return referenceFolder().resolve(name + ".png");
+        return folder(courseOf(fileOf(name))).resolve("reference").resolve(name + ".png");
     }
 
     /**

@@ -12,7 +12,6 @@ import ray.image.ImageDiff;
 import ray.image.PngReader;
 import ray.scene.Scene;
 import ray.scene.SceneException;
-import ray.scene.SceneLoader;
 import ray.testing.NotThisTasksFault;
 import ray.testing.StudentTask;
 
@@ -63,7 +62,7 @@ public abstract class RenderTestBase {
         }
         Scene loaded;
         try {
-            loaded = SceneLoader.load(file);
+            loaded = RenderScenes.load(file);
         } catch (SceneException e) {
             throw new NotThisTasksFault("the scene does not load: " + e.messageNaming(RenderScenes.shown(e.file()))
                     + "\n    Fix the scene file, or restore it from the handout; this test judges your code once it loads.");

@@ -13,6 +13,7 @@ import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.math.Vec3;
 import ray.render.SceneTracer;
+import ray.shading.Brdf;
 import ray.shading.Light;
 import ray.shading.Shader;
 import ray.shading.ShadingContext;
@@ -107,12 +108,26 @@ public final class StudentCalls {
         return (Vec3) uvCall(self, Protocol.OP_TEX_COLOR, u, v, WireIn::vec);
     }
 
+    /** The student's BRDF {@code value(rhoD, n, l, v)} on {@code self}'s twin, asked at once. */
+    public static Vec3 brdfValue(Brdf self, Vec3 rhoD, Vec3 n, Vec3 l, Vec3 v) {
+        return (Vec3) valueCall(self, Protocol.OP_BRDF_VALUE, body -> body.vec(rhoD).vec(n).vec(l).vec(v), WireIn::vec);
+    }
+
     /** A call {@code op}(u, v) on {@code self}'s twin, asked at once: what it returned, read by {@code value}, or what it threw, rethrown. */
     private static Object uvCall(Object self, int op, double u, double v, java.util.function.Function<WireIn, Object> value) {
+        return valueCall(self, op, body -> body.f64(u).f64(v), value);
+    }
+
+    /**
+     * A call {@code op} on {@code self}'s twin, its arguments written by {@code arguments}, asked at
+     * once: what it returned, read by {@code value}, or what it threw, rethrown.
+     */
+    private static Object valueCall(Object self, int op, java.util.function.Consumer<ray.grading.wire.WireOut> arguments,
+            java.util.function.Function<WireIn, Object> value) {
         Outcome outcome = Worker.get().call(m -> {
             m.body.u8(op);
             m.target((StandIn) self);
-            m.body.f64(u).f64(v);
+            arguments.accept(m.body);
         }, in -> returnedOrThrew(in, value));
         outcome.rethrow(self);
         return outcome.value;

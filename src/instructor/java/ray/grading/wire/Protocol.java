@@ -28,7 +28,7 @@ public final class Protocol {
     public static final int EXITING = 14;
 
     /** The first bytes of READY's payload: both sides must be built from the same grading code. */
-    public static final String VERSION = "ray1-grading-wire-2";
+    public static final String VERSION = "ray1-grading-wire-3";
 
     // Definitions, sent ahead of the calls that use them.
     /** A twin: the student's class made by its no-argument constructor (handle, class name). */
@@ -84,6 +84,11 @@ public final class Protocol {
      * ({@link #CB_INTERSECT}) and has hits shaded by the judge ({@link #CB_SHADE_HIT}).
      */
     public static final int OP_SHADE_RAY = 5;
+    /**
+     * A BRDF's value(rhoD, n, l, v): the twin (whose parameters, such as the Phong BRDF's ks and p, are
+     * its framework state) and the four vectors; the answer a vector. A pure function: no callbacks.
+     */
+    public static final int OP_BRDF_VALUE = 6;
 
     // What a callback asks (its first byte), worker to judge, during a call.
     /** A judge-side surface's intersect: its handle, the ray, the record. */

@@ -13,6 +13,7 @@ import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.math.Vec3;
 import ray.render.SceneTracer;
+import ray.shading.Brdf;
 import ray.shading.DirectLighting;
 import ray.shading.Light;
 import ray.shading.Shader;
@@ -56,6 +57,9 @@ final class WorkerCalls {
                     break;
                 case Protocol.OP_SHADE_RAY:
                     shadeRay(in, answer);
+                    break;
+                case Protocol.OP_BRDF_VALUE:
+                    brdfValue(in, answer);
                     break;
                 default:
                     throw new WireError("a call of kind " + op);
@@ -185,6 +189,24 @@ final class WorkerCalls {
             return;
         }
         answer.u8(Protocol.RETURNED).vec(color);
+    }
+
+    private void brdfValue(WireIn in, WireOut answer) {
+        int handle = target(in);
+        Vec3 rhoD = in.vec();
+        Vec3 n = in.vec();
+        Vec3 l = in.vec();
+        Vec3 v = in.vec();
+        in.end();
+        Brdf twin = objects.twin(handle, Brdf.class);
+        Vec3 value;
+        try {
+            value = twin.value(rhoD, n, l, v);
+        } catch (Throwable t) {
+            threw(answer, t);
+            return;
+        }
+        answer.u8(Protocol.RETURNED).vec(value);
     }
 
     /** What the student's code threw; a judge-side surface's exception, or a broken twin's, passes on as it was. */
