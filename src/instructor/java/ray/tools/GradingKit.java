@@ -42,7 +42,7 @@ public final class GradingKit {
         // The tree as it ships, and (compiled from exactly that) its classes as the grader would compile them.
         Path tree = Files.createTempDirectory("ray1-kit-");
         try {
-            for (String part : ProjectTree.PARTS) {
+            for (String part : ProjectTree.parts(Assignment.current())) {
                 if (part.equals(Assignment.PROJECT_FILE)) {
                     // The assignment the package grades, complete (AssignmentArguments), whatever the project's file says.
                     byte[] text = Assignment.current().toFileText("The assignment this package grades (written when it was packed).")

@@ -17,6 +17,7 @@ import java.util.stream.Stream;
 import org.apache.commons.compress.archivers.zip.ZipArchiveEntry;
 import org.apache.commons.compress.archivers.zip.ZipArchiveOutputStream;
 import ray.assignment.Assignment;
+import ray.grading.ProjectTree;
 import ray.grading.SolutionMarkers;
 
 /**
@@ -151,12 +152,9 @@ public final class Handout {
         return files;
     }
 
-    /** The folder of ray1's scenes in the course's 2019 conventions, which ship only with a 2019 assignment. */
-    static final String SCENES_2019 = "scenes-2019";
-
     /** Whether {@code relative} is a scene file (or reference) of a course other than the assignment's. */
     static boolean isOtherCoursesScene(String relative, Assignment assignment) {
-        return relative.startsWith(SCENES_2019 + "/") && !assignment.course().equals("2019");
+        return relative.startsWith(ProjectTree.SCENES_2019 + "/") && !assignment.course().equals("2019");
     }
 
     /** Whether a file or folder of this name is the instructor's: its name starts with "instructor". */

@@ -14,11 +14,11 @@ import org.junit.Test;
 import ray.assignment.Assignment;
 
 /**
- * The tasks the course-2017 preset gives and the default one leaves to the framework (the ray's
- * color and the light loops), written the ways students write them, earn every point of their task
- * and render every shipped scene within tolerance; the known mistakes lose points of their task. As
- * {@link AlternativeSolutionsTest}, under the course-2017 assignment, whose numbers the grader's
- * tasks then have.
+ * The shading tasks the course presets give and the default one leaves to the framework (the ray's
+ * color and the light loops under course-2017, the BRDFs under course-2019), written the ways
+ * students write them, earn every point of their task and render every shipped scene within
+ * tolerance; the known mistakes lose points of their task. As {@link AlternativeSolutionsTest},
+ * under the preset that gives the task, whose numbers the grader's tasks then have.
  */
 public class ShadingTasksVariantsTest {
     private static final String RENDER_TESTS = "ray.endtoend.";
@@ -56,17 +56,8 @@ public class ShadingTasksVariantsTest {
      */
     @Test
     public void lightLoopsWrittenAnyCorrectWayEarnEveryPoint() throws Exception {
-        StringBuilder unfair = new StringBuilder();
-        for (String name : List.of("lighting-lights-reversed", "lighting-shadow-after-formula", "lighting-repeated-products")) {
-            Variant variant = Variant.correct(name, task);
-            List<VariantGrading.Outcome> outcomes = VariantGrading.run(variant,
-                    (t, type) -> t == task || type.startsWith(RENDER_TESTS), work);
-            summarize(variant, outcomes);
-            assertTrue(variant + " ran no graded test", outcomes.stream().anyMatch(o -> o.task == task));
-            assertTrue(variant + " ran no render test of another task", outcomes.stream().anyMatch(o -> o.task != task));
-            outcomes.stream().filter(o -> !o.passed()).forEach(o -> unfair.append("\n  ").append(variant).append(": ").append(o));
-        }
-        assertTrue("correct light loops lost points:" + unfair, unfair.length() == 0);
+        assertEachEarnsEveryPoint(List.of("lighting-lights-reversed", "lighting-shadow-after-formula", "lighting-repeated-products"), task,
+                "correct light loops");
     }
 
     /** No shadow test, l reversed, no 1/r², Phong's mirror-form highlight: each loses points of the lighting task. */
@@ -89,26 +80,64 @@ public class ShadingTasksVariantsTest {
     /** The ray's color as one expression, and with the search on a copy of the ray: every point, every render. */
     @Test
     public void rayColorWrittenAnyCorrectWayEarnsEveryPoint() throws Exception {
-        StringBuilder unfair = new StringBuilder();
-        for (String name : List.of("ray-color-ternary", "ray-color-copied-ray")) {
-            Variant variant = Variant.correct(name, rayColor);
-            List<VariantGrading.Outcome> outcomes = VariantGrading.run(variant,
-                    (t, type) -> t == rayColor || type.startsWith(RENDER_TESTS), work);
-            summarize(variant, outcomes);
-            assertTrue(variant + " ran no graded test", outcomes.stream().anyMatch(o -> o.task == rayColor));
-            outcomes.stream().filter(o -> !o.passed()).forEach(o -> unfair.append("\n  ").append(variant).append(": ").append(o));
-        }
-        assertTrue("a correct ray color lost points:" + unfair, unfair.length() == 0);
+        assertEachEarnsEveryPoint(List.of("ray-color-ternary", "ray-color-copied-ray"), rayColor, "a correct ray color");
     }
 
     /** Black for the background, the hit shaded one depth deeper: each loses points of the ray-color task. */
     @Test
     public void rayColorMistakesLosePointsOfTheirTask() throws Exception {
-        for (String name : List.of("ray-color-black-background", "ray-color-depth-plus-one")) {
-            Variant wrong = Variant.wrong(name, rayColor);
-            List<VariantGrading.Outcome> outcomes = VariantGrading.run(wrong, (t, type) -> t == rayColor, work);
+        assertEachLosesPointsOfItsTask(List.of("ray-color-black-background", "ray-color-depth-plus-one"), rayColor);
+    }
+
+    /**
+     * The 2019 BRDFs (course-2019's task): each channel over π on its own with the half vector by hand
+     * and repeated products, 1/π as a constant with the diffuse part borrowed and an early return:
+     * every point of the task and every render test.
+     */
+    @Test
+    public void brdfsWrittenAnyCorrectWayEarnEveryPoint() throws Exception {
+        Assignment.use(Assignment.preset("course-2019"));
+        try {
+            assertEachEarnsEveryPoint(List.of("brdfs-written-out", "brdfs-inverse-pi"), Assignment.current().number("brdfs"), "correct BRDFs");
+        } finally {
+            Assignment.use(Assignment.preset("course-2017"));
+        }
+    }
+
+    /** No π, the highlight over π too, Phong's mirror form, the highlight without the cosine: each loses points of the BRDF task. */
+    @Test
+    public void brdfMistakesLosePointsOfTheirTask() throws Exception {
+        Assignment.use(Assignment.preset("course-2019"));
+        try {
+            assertEachLosesPointsOfItsTask(List.of("brdfs-no-pi", "brdfs-specular-over-pi", "brdfs-mirror-form", "brdfs-cosine-removed"),
+                    Assignment.current().number("brdfs"));
+        } finally {
+            Assignment.use(Assignment.preset("course-2017"));
+        }
+    }
+
+    /** Each correct variant named earns every point of task {@code number} and passes every render test, its task's and the others'. */
+    private static void assertEachEarnsEveryPoint(List<String> names, int number, String what) throws Exception {
+        StringBuilder unfair = new StringBuilder();
+        for (String name : names) {
+            Variant variant = Variant.correct(name, number);
+            List<VariantGrading.Outcome> outcomes = VariantGrading.run(variant,
+                    (t, type) -> t == number || type.startsWith(RENDER_TESTS), work);
+            summarize(variant, outcomes);
+            assertTrue(variant + " ran no graded test", outcomes.stream().anyMatch(o -> o.task == number));
+            assertTrue(variant + " ran no render test of another task", outcomes.stream().anyMatch(o -> o.task != number));
+            outcomes.stream().filter(o -> !o.passed()).forEach(o -> unfair.append("\n  ").append(variant).append(": ").append(o));
+        }
+        assertTrue(what + " lost points:" + unfair, unfair.length() == 0);
+    }
+
+    /** Each known mistake named fails some regular test of task {@code number}. */
+    private static void assertEachLosesPointsOfItsTask(List<String> names, int number) throws Exception {
+        for (String name : names) {
+            Variant wrong = Variant.wrong(name, number);
+            List<VariantGrading.Outcome> outcomes = VariantGrading.run(wrong, (t, type) -> t == number, work);
             summarize(wrong, outcomes);
-            assertTrue(wrong + " must lose points of the ray-color task", outcomes.stream().anyMatch(o -> !o.bonus && !o.passed()));
+            assertTrue(wrong + " must lose points of its task", outcomes.stream().anyMatch(o -> !o.bonus && !o.passed()));
         }
     }
 
