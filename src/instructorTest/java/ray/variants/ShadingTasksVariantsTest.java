@@ -116,6 +116,34 @@ public class ShadingTasksVariantsTest {
         }
     }
 
+    /**
+     * The 2019 reflection shader: the lights in reverse with the shadow test after the share and the
+     * reflection in a helper, and channel by channel with the shadow test first and Schlick as
+     * products: every point and every render test.
+     */
+    @Test
+    public void reflectionShadersWrittenAnyCorrectWayEarnEveryPoint() throws Exception {
+        Assignment.use(Assignment.preset("course-2019"));
+        try {
+            assertEachEarnsEveryPoint(List.of("reflection-written-out", "reflection-vectors"), Assignment.current().number("reflection"),
+                    "correct reflection shaders");
+        } finally {
+            Assignment.use(Assignment.preset("course-2017"));
+        }
+    }
+
+    /** Schlick from the wrong side, a mirror ray where k_m = 0, no cosine, no back-face gate: each loses points of the reflection task. */
+    @Test
+    public void reflectionMistakesLosePointsOfTheirTask() throws Exception {
+        Assignment.use(Assignment.preset("course-2019"));
+        try {
+            assertEachLosesPointsOfItsTask(List.of("reflection-r0-wrong-side", "reflection-mirror-at-zero", "reflection-no-cosine",
+                    "reflection-no-gate"), Assignment.current().number("reflection"));
+        } finally {
+            Assignment.use(Assignment.preset("course-2017"));
+        }
+    }
+
     /** Each correct variant named earns every point of task {@code number} and passes every render test, its task's and the others'. */
     private static void assertEachEarnsEveryPoint(List<String> names, int number, String what) throws Exception {
         StringBuilder unfair = new StringBuilder();

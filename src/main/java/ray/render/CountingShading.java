@@ -109,7 +109,7 @@ final class CountingShading extends SceneShading {
 
     @Override
     public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
-        if (!withinDepth(depth)) {
+        if (!traces(hit, depth)) {
             return Vec3.ZERO;
         }
         stats.reflection++;

@@ -6,6 +6,7 @@ import ray.Ray;
 import ray.accel.Acceleration;
 import ray.math.Vec3;
 import ray.scene.Scene;
+import ray.shading.Course;
 import ray.shading.Light;
 import ray.shading.ShadingContext;
 import ray.surface.HitGeometry;
@@ -84,14 +85,24 @@ public class SceneShading implements ShadingContext {
         return anyHitShadows ? !surfaces.intersectsAny(shadowRay) : !surfaces.intersect(shadowHit, shadowRay);
     }
 
-    /** Whether a ray of recursion depth {@code depth} (0 for camera rays) may be traced: its hit would be number depth + 1. */
-    protected boolean withinDepth(int depth) {
-        return depth < pathHits;
+    /**
+     * Whether a mirror ray of recursion depth {@code depth} (0 for camera rays) from {@code hit} is
+     * traced: its hit would be number depth + 1, which the plan's cap allows, and, from a shader of
+     * the course's 2019 conventions, the course's own limit of {@link Course#MAX_PATH_HITS_2019} hits
+     * per path (the course's tracer returned black past it; a 2017 glaze keeps its own cap).
+     */
+    protected boolean traces(IntersectionRecord hit, int depth) {
+        if (depth >= pathHits) {
+            return false;
+        }
+        boolean course2019 = hit != null && hit.surface != null && hit.surface.getShader() != null
+                && hit.surface.getShader().course() == Course.Y2019;
+        return !course2019 || depth < Course.MAX_PATH_HITS_2019;
     }
 
     @Override
     public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
-        return withinDepth(depth) ? radiance(reflectionRay(hit, direction), depth) : Vec3.ZERO;
+        return traces(hit, depth) ? radiance(reflectionRay(hit, direction), depth) : Vec3.ZERO;
     }
 
     /** The shadow ray that {@link #unoccluded} traces from {@code hit} toward {@code lightPosition}. */

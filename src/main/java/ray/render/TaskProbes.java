@@ -26,7 +26,9 @@ import ray.shading.LambertianBrdf;
 import ray.shading.Light;
 import ray.shading.Phong;
 import ray.shading.PhongBrdf;
+import ray.shading.ReflectionShader;
 import ray.shading.RepeatTexture;
+import ray.shading.Shader;
 import ray.shading.ShadingContext;
 import ray.shading.Texture;
 import ray.surface.Cylinder;
@@ -67,6 +69,7 @@ public final class TaskProbes {
         PHONG("Phong"),
         LAMBERTIAN_BRDF("LambertianBrdf"),
         PHONG_BRDF("PhongBrdf"),
+        REFLECTION_SHADER("ReflectionShader"),
         CYLINDER("Cylinder");
 
         /** Its task's id in the table. */
@@ -157,6 +160,11 @@ public final class TaskProbes {
                 case PHONG_BRDF:
                     // ρd/π + ks · (n·h)^p with l = v = h = n: ρd/π + ks.
                     return brdf(new PhongBrdf(new Vec3(1, 1, 1), 10), new Vec3(0.5 / Math.PI + 1, 0.25 / Math.PI + 1, 1 / Math.PI + 1));
+                case REFLECTION_SHADER:
+                    // f ⊙ I · (n·l) / r² = ρd/π · 4 · 1 / 4 with a BRDF of the probe's own (the Lambertian's
+                    // formula, so that a stub of that task does not make this one look like a stub), no mirror term.
+                    return lighting(new ReflectionShader("probe", new ProbeBrdf(), new Vec3(0.5, 0.25, 1), null, Vec3.ZERO, null, null),
+                            new Vec3(0.5 / Math.PI, 0.25 / Math.PI, 1 / Math.PI));
                 default:
                     throw new AssertionError(part);
             }
@@ -436,9 +444,11 @@ public final class TaskProbes {
      * distance 2 straight above it, with nothing in the way: the shader (kd = (0.5, 0.25, 1)) must
      * return {@code expected}. The stub returns black, here and with the light moved aside.
      */
-    private static Finding lighting(DirectLighting shader, Vec3 expected) {
+    private static Finding lighting(Shader shader, Vec3 expected) {
         String name = shader.getClass().getSimpleName() + ".shade";
-        shader.setDiffuseColor(new Vec3(0.5, 0.25, 1));
+        if (shader instanceof DirectLighting) {
+            ((DirectLighting) shader).setDiffuseColor(new Vec3(0.5, 0.25, 1));
+        }
         shader.complete();
         IntersectionRecord hit = new IntersectionRecord();
         hit.t = 2;
@@ -451,8 +461,22 @@ public final class TaskProbes {
         String problem = above != null && close(above, expected) ? null
                 : name + " returned " + above + " for a point facing a light of intensity (4, 4, 4) straight above it at distance 2 (kd = "
                         + "(0.5, 0.25, 1)" + (shader instanceof Phong ? ", ks = (1, 1, 1), p = 10, seen from straight above" : "")
+                        + (shader instanceof ReflectionShader ? ", the Lambertian BRDF ρd/π, seen from straight above, no mirror term" : "")
                         + ", nothing in the way); expected " + expected;
         return new Finding(stub, problem);
+    }
+
+    /** ρd/π, the probes' own BRDF: the reflection shader's probe does not depend on the students' BRDFs. */
+    private static final class ProbeBrdf implements Brdf {
+        @Override
+        public Vec3 value(Vec3 rhoD, Vec3 n, Vec3 l, Vec3 v) {
+            return rhoD.times(1 / Math.PI);
+        }
+
+        @Override
+        public String formula() {
+            return "ρd/π";
+        }
     }
 
     /** A BRDF's value for ρd = (0.5, 0.25, 1) with light and eye along the normal, and with both slanted. */

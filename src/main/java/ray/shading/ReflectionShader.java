@@ -1,208 +1,105 @@
 package ray.shading;
 
-import java.util.EnumSet;
-import java.util.Set;
-import java.util.function.DoubleFunction;
+import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
 import ray.math.Vec3;
 
 /**
- * The course's 2019 shader: a {@link Brdf} lit by point lights, plus an optional mirror term. For a
- * hit seen along a ray of unit direction d, with v = −d and n the shading normal:
- *
- * <ol>
- * <li>a hit seen from behind its normal (n·v ≤ 0) is black, lights and mirror alike;
- * <li>each light whose shadow ray is clear adds f(l, v) ⊙ I · max(0, n·l) / r²;
- * <li>when the mirror coefficient k_m is not zero, the ray reflected about n,
- * d_r = d − 2(d·n)n, brings back radiance weighted per channel by Schlick's
- * R = k_m + (1 − k_m)(1 − n·v)^5, unless the path already has {@link Course#MAX_PATH_HITS_2019}
- * hits (the course returns black for a ray past that depth, so no ray is traced).
- * </ol>
- *
- * The loader makes one from a Lambertian or Phong element when the scene loads under 2019's
- * conventions ({@link Shader#forCourse}); it is never written in a scene file itself.
+ * The course's 2019 shader: a BRDF lit by point lights, plus a mirror term weighted by Schlick's
+ * approximation. Its BRDF, diffuse color or texture and mirror coefficient are kept by BrdfShader.
  */
-public final class ReflectionShader extends Shader {
-    private final String name;
-    private final Brdf brdf;
-    private final Vec3 diffuseColor;
-    private final Texture texture;
-    private final Vec3 mirrorCoefficient;
-    private final Vec3 specularColor;
-    private final Double exponent;
+public class ReflectionShader extends BrdfShader {
 
-    /**
-     * @param name              the scene's name for it ("Lambertian", "Phong"), which trace shows
-     * @param specularColor     ks and {@code exponent} p, for the description; null for a shader without a highlight
-     */
-    public ReflectionShader(String name, Brdf brdf, Vec3 diffuseColor, Texture texture, Vec3 mirrorCoefficient,
-            Vec3 specularColor, Double exponent) {
-        this.name = name;
-        this.brdf = brdf;
-        this.diffuseColor = diffuseColor;
-        this.texture = texture;
-        this.mirrorCoefficient = mirrorCoefficient;
-        this.specularColor = specularColor;
-        this.exponent = exponent;
+    public ReflectionShader() {
     }
 
-    public Brdf brdf() {
-        return brdf;
-    }
-
-    public Vec3 getMirrorCoefficient() {
-        return mirrorCoefficient;
-    }
-
-    @Override
-    public Vec3 getDiffuseColor() {
-        return diffuseColor;
-    }
-
-    @Override
-    public Texture getTexture() {
-        return texture;
-    }
-
-    @Override
-    public Vec3 diffuseColorAt(IntersectionRecord hit) {
-        return texture != null ? texture.colorAt(hit) : diffuseColor;
-    }
-
-    @Override
-    public Vec3 getSpecularColor() {
-        return specularColor;
-    }
-
-    @Override
-    public Double getExponent() {
-        return exponent;
-    }
-
-    @Override
-    public Course course() {
-        return Course.Y2019;
-    }
-
-    private boolean mirrors() {
-        return mirrorCoefficient.x != 0 || mirrorCoefficient.y != 0 || mirrorCoefficient.z != 0;
-    }
-
-    @Override
-    public Set<Effect> effects() {
-        Set<Effect> effects = EnumSet.of(Effect.LIGHTING, Effect.SHADOWS);
-        if (specularColor != null) {
-            effects.add(Effect.SPECULAR);
-        }
-        if (texture != null) {
-            effects.add(Effect.TEXTURES);
-        }
-        if (mirrors()) {
-            effects.add(Effect.REFLECTION);
-        }
-        return effects;
-    }
-
-    /** Schlick's weight of the mirror term, per channel, for n·v = {@code cosine}: k_m + (1 − k_m)(1 − n·v)^5. */
-    public Vec3 schlick(double cosine) {
-        double m = 1 - Math.min(1, cosine);
-        double m5 = m * m * m * m * m;
-        return new Vec3(mirrorCoefficient.x + (1 - mirrorCoefficient.x) * m5,
-                mirrorCoefficient.y + (1 - mirrorCoefficient.y) * m5,
-                mirrorCoefficient.z + (1 - mirrorCoefficient.z) * m5);
-    }
-
-    /**
-     * The back-face gate: whether the hit is seen from behind its shading normal (n·v ≤ 0, v toward
-     * the ray's origin), where 2019's shader returns black without evaluating anything.
-     */
-    public static boolean seenFromBehind(IntersectionRecord hit, Ray ray) {
-        return !(hit.normal.dot(towardEye(ray)) > 0);
-    }
-
-    @Override
-    public boolean evaluatesAt(IntersectionRecord hit, Ray ray) {
-        return !seenFromBehind(hit, ray);
+    public ReflectionShader(String name, Brdf brdf, Vec3 diffuseColor, Texture texture, Vec3 mirrorCoefficient, Vec3 specularColor,
+            Double exponent) {
+        super(name, brdf, diffuseColor, texture, mirrorCoefficient, specularColor, exponent);
     }
 
     @Override
     public Vec3 shade(IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
-        if (seenFromBehind(hit, ray)) {
-            return Vec3.ZERO; // the back-face gate: lights and mirror alike
-        }
+        // TODO(Task 10): return the light this surface sends back along the ray: its lights through its BRDF, and its mirror term.
+        //   Return the light that leaves the hit toward the ray's origin: for each light that reaches the
+        //   hit, the BRDF's value for that light's direction and the eye's times the light's intensity,
+        //   times how squarely the light falls on the surface, falling off with the square of the
+        //   distance; plus, for a surface with a mirror coefficient, the light arriving along the mirror
+        //   direction, weighted by Schlick's approximation of how much a mirror reflects at that angle.
+        //   Conventions (the reference images depend on them):
+        //   - v is the unit vector from the hit toward the ray's origin and n is hit.normal (unit length).
+        //     A hit seen from behind its normal (n·v ≤ 0) is black: no lights, no mirror term.
+        //   - The lights are context.lights(); a light counts only if context.unoccluded(hit, its position)
+        //     says nothing blocks the way to it; a light behind the surface, or exactly at the point, adds nothing.
+        //   - The BRDF is brdf(): brdf().value(diffuseColorAt(hit), n, l, v), per channel; it has no cosine in it.
+        //   - The mirror coefficient k_m is getMirrorCoefficient(), per channel; when it is zero in every
+        //     channel there is no mirror term and no mirror ray. Otherwise the mirror direction is the ray's
+        //     direction reflected about n, context.radiance(hit, that direction, depth + 1) is the light
+        //     arriving along it (the renderer starts the ray off the surface and stops paths at the course's
+        //     limit), and Schlick's weight is k_m + (1 − k_m)(1 − n·v)^5, channel by channel.
+        // HINTS steps
+        //   1) Find v and n·v; if n·v is not positive, return black.
+        //   2) Look up the diffuse reflectance at the hit once.
+        //   3) For each light: the vector to it, its length squared and the unit vector l along it; skip the
+        //      light when it is at the point, when n·l is not positive or when it is blocked; otherwise add
+        //      the BRDF's value times the light's intensity times n·l, divided by the squared distance.
+        //   4) If the mirror coefficient is not zero: reflect the ray's unit direction about n, ask the
+        //      context for the light along it one depth deeper, and add it times Schlick's weight.
+        // HINTS formulas
+        //   1) d = ray.direction.normalized(), v = −d, n = hit.normal; if n·v ≤ 0, return Vec3.ZERO.
+        //   2) ρd = diffuseColorAt(hit).
+        //   3) For each light: toLight = light.getPosition() − hit.location, r² = toLight.lengthSquared(),
+        //      l = toLight.normalized(); skip when r² = 0, n·l ≤ 0 or !context.unoccluded(hit, light.getPosition());
+        //      L += brdf().value(ρd, n, l, v) ⊙ I · (n·l) / r², with I = light.getIntensity().
+        //   4) If k_m ≠ (0, 0, 0): r = d − 2(d·n)n, R = k_m + (1 − k_m)(1 − n·v)^5 per channel,
+        //      L += R ⊙ context.radiance(hit, r, depth + 1).
+        // END HINTS
+        // BEGIN SOLUTION
         Vec3 d = ray.direction.normalized();
         Vec3 v = d.negate();
         Vec3 n = hit.normal;
         double nv = n.dot(v);
-        double r = 0, g = 0, b = 0;
-        if (!context.lights().isEmpty()) {
+        if (!(nv > 0)) {
+            return Vec3.ZERO; // the back-face gate: lights and mirror alike
+        }
+        double r = 0;
+        double g = 0;
+        double b = 0;
+        List<Light> lights = context.lights();
+        if (!lights.isEmpty()) {
             Vec3 rhoD = diffuseColorAt(hit);
-            for (Light light : context.lights()) {
+            for (Light light : lights) {
                 Vec3 toLight = light.getPosition().minus(hit.location);
-                double r2 = toLight.lengthSquared();
+                double distanceSquared = toLight.lengthSquared();
+                if (distanceSquared == 0) {
+                    continue; // a light at the point itself: no direction to it
+                }
                 Vec3 l = toLight.normalized();
                 double nl = n.dot(l);
-                // f is evaluated for every light (as the render counters count it), but a light below
-                // the surface, or one f gives nothing, adds nothing and costs no shadow ray.
-                Vec3 f = brdf.value(rhoD, n, l, v);
-                if (!(nl > 0) || f.x == 0 && f.y == 0 && f.z == 0 || !context.unoccluded(hit, light.getPosition())) {
+                // A light below the surface adds nothing, so it costs no shadow ray.
+                if (!(nl > 0) || !context.unoccluded(hit, light.getPosition())) {
                     continue;
                 }
+                Vec3 f = brdf().value(rhoD, n, l, v);
                 Vec3 intensity = light.getIntensity();
-                r += f.x * intensity.x * nl / r2;
-                g += f.y * intensity.y * nl / r2;
-                b += f.z * intensity.z * nl / r2;
+                r += f.x * intensity.x * nl / distanceSquared;
+                g += f.y * intensity.y * nl / distanceSquared;
+                b += f.z * intensity.z * nl / distanceSquared;
             }
         }
-        // Ray depth counts from 0 at the camera, so this hit is the (depth + 1)-th of its path.
-        if (mirrors() && depth + 2 <= Course.MAX_PATH_HITS_2019) {
+        Vec3 km = getMirrorCoefficient();
+        if (km.x != 0 || km.y != 0 || km.z != 0) {
             Vec3 mirrored = d.minus(n.times(2 * d.dot(n)));
-            Vec3 weight = schlick(nv);
+            double m = 1 - Math.min(1, nv);
+            double m5 = m * m * m * m * m;
             Vec3 arriving = context.radiance(hit, mirrored, depth + 1);
-            r += weight.x * arriving.x;
-            g += weight.y * arriving.y;
-            b += weight.z * arriving.z;
+            r += (km.x + (1 - km.x) * m5) * arriving.x;
+            g += (km.y + (1 - km.y) * m5) * arriving.y;
+            b += (km.z + (1 - km.z) * m5) * arriving.z;
         }
         return new Vec3(r, g, b);
-    }
-
-    @Override
-    public String describe(DoubleFunction<String> number) {
-        String s = super.describe(number) + " (2019: f = " + brdf.formula() + ")";
-        return mirrors() ? s + ", mirror k_m = " + mirrorCoefficient.format(number) : s;
-    }
-
-    @Override
-    public Vec3 explain(IntersectionRecord hit, Ray ray, ShadingSteps steps) {
-        Vec3 v = towardEye(ray);
-        double nv = hit.normal.dot(v);
-        steps.line("L = Σ over lights of f ⊙ I · max(0, n·l) / r², f = " + brdf.formula()
-                + (mirrors() ? ", + R ⊙ L_mirror, R = k_m + (1 − k_m)(1 − n·v)^5 (Schlick)" : "")
-                + "; black when n·v ≤ 0 (the course's 2019 rules)");
-        if (!(nv > 0)) {
-            steps.row("n·v", steps.num(nv) + "   (≤ 0: seen from behind its normal, the surface is black)");
-            return Vec3.ZERO;
-        }
-        if (!mirrors()) {
-            return steps.lightByLight(this, hit, ray);
-        }
-        // The lights' part alone: the same shader without its mirror term.
-        Vec3 lights = steps.lightByLight(new ReflectionShader(name, brdf, diffuseColor, texture, Vec3.ZERO, specularColor, exponent),
-                hit, ray);
-        Vec3 weight = schlick(nv);
-        steps.row("n·v", steps.num(nv));
-        steps.row("R", steps.vec(weight) + "   (k_m = " + steps.vec(mirrorCoefficient) + ")");
-        Vec3 d = v.negate();
-        Vec3 lMirror = steps.mirror(hit, d.minus(hit.normal.times(2 * d.dot(hit.normal))));
-        Vec3 total = shade(hit, ray, steps.context(), 0);
-        steps.row("L", "lights + R ⊙ L_mirror = " + steps.vec(lights) + " + " + steps.vec(weight) + " ⊙ "
-                + steps.vec(lMirror) + " = " + steps.vec(total));
-        return total;
-    }
-
-    @Override
-    public String toString() {
-        return name;
+        // END SOLUTION
+        // STUB: return Vec3.ZERO;
     }
 }

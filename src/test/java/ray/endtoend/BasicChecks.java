@@ -45,10 +45,15 @@ final class BasicChecks {
         if (plan.runs(Effect.TEXTURES)) {
             ids.add("textures");
         }
-        // The light loops of the Lambertian and Phong shaders (2017), or their BRDFs (2019), which run
-        // when the scene has a light.
+        // The light loops of the Lambertian and Phong shaders (2017), or their BRDFs and the reflection
+        // shader's loop (2019), which run when the scene has a light.
         if (plan.runs(Effect.LIGHTING)) {
-            ids.add(usesBrdfs(scene) ? "brdfs" : "lighting");
+            if (usesBrdfs(scene)) {
+                ids.add("brdfs");
+                ids.add("reflection");
+            } else {
+                ids.add("lighting");
+            }
         }
         Set<StudentTask> tasks = new LinkedHashSet<>();
         for (StudentTask task : StudentTask.values()) {

@@ -16,7 +16,8 @@ import ray.testing.Hints;
  * A shading case for the light loops, built by hand: one hit (its point, unit normal and the ray
  * that found it), the scene's lights, and which of them something blocks. Its context answers the
  * shadow tests from that list and notes them, so a test can say which light a shadow test asked
- * about; it sends no mirror rays (Lambertian and Phong trace none).
+ * about. A mirror ray is an error unless the case says what the mirror direction brings back
+ * ({@link #mirrorSees}); then each mirror ray's direction and depth are noted.
  */
 final class LitPoint {
     final IntersectionRecord hit = new IntersectionRecord();
@@ -27,6 +28,11 @@ final class LitPoint {
     final List<Vec3> asked = new ArrayList<>();
     /** What the shader asked of the context that the contract rules out, or null (checked once shade returns, so no student code catches it). */
     private String misuse;
+    /** What a mirror ray brings back, or null when the shader must trace none. */
+    private Vec3 mirrorColor;
+    /** The directions and depths of the mirror rays the shader asked for, in order. */
+    final List<Vec3> mirrorDirections = new ArrayList<>();
+    final List<Integer> mirrorDepths = new ArrayList<>();
 
     /** The point {@code location} with unit normal {@code normal}, seen from {@code eye}. */
     LitPoint(Vec3 location, Vec3 normal, Vec3 eye) {
@@ -39,6 +45,12 @@ final class LitPoint {
 
     LitPoint light(Vec3 position, Vec3 intensity) {
         lights.add(new Light(position, intensity));
+        return this;
+    }
+
+    /** Mirror rays are expected, and each brings back {@code color}. */
+    LitPoint mirrorSees(Vec3 color) {
+        mirrorColor = color;
         return this;
     }
 
@@ -73,10 +85,19 @@ final class LitPoint {
 
         @Override
         public Vec3 radiance(IntersectionRecord at, Vec3 direction, int depth) {
-            if (misuse == null) {
-                misuse = "a Lambertian or Phong shader traces no mirror rays, but context.radiance was called";
+            if (mirrorColor == null) {
+                if (misuse == null) {
+                    misuse = "this shader has no mirror term (a Lambertian or Phong, or a mirror coefficient of zero), but"
+                            + " context.radiance was called";
+                }
+                return Vec3.ZERO;
             }
-            return Vec3.ZERO;
+            if (at != hit && misuse == null) {
+                misuse = "the mirror ray was asked from another hit than the one being shaded" + Hints.fix("; pass it the hit shade was given");
+            }
+            mirrorDirections.add(direction);
+            mirrorDepths.add(depth);
+            return mirrorColor;
         }
     };
 
@@ -90,7 +111,12 @@ final class LitPoint {
 
     /** What {@code shader} returns here, for a camera ray. */
     Vec3 shade(Shader shader) {
-        Vec3 result = shader.shade(hit, ray, context, 0);
+        return shade(shader, 0);
+    }
+
+    /** What {@code shader} returns here, for a ray of recursion depth {@code depth}. */
+    Vec3 shade(Shader shader, int depth) {
+        Vec3 result = shader.shade(hit, ray, context, depth);
         if (misuse != null) {
             fail("shading " + describe() + ": " + misuse);
         }

@@ -136,12 +136,14 @@ public final class StudentCalls {
     /** The student's shade calls running on each thread, the innermost last: the contexts the worker's callbacks ask. */
     private static final ThreadLocal<Deque<ShadeCall>> SHADING = ThreadLocal.withInitial(ArrayDeque::new);
 
-    /** One shade call the worker is running: the renderer's (or the test's) context, and the hit it was given. */
+    /** One shade call the worker is running: the shader, the renderer's (or the test's) context, and the hit it was given. */
     static final class ShadeCall {
+        final Shader shader;
         final ShadingContext context;
         final IntersectionRecord hit;
 
-        ShadeCall(ShadingContext context, IntersectionRecord hit) {
+        ShadeCall(Shader shader, ShadingContext context, IntersectionRecord hit) {
+            this.shader = shader;
             this.context = context;
             this.hit = hit;
         }
@@ -164,7 +166,7 @@ public final class StudentCalls {
     public static Vec3 shade(Shader self, IntersectionRecord hit, Ray ray, ShadingContext context, int depth) {
         Vec3 textureColor = self.getTexture() != null ? self.diffuseColorAt(hit) : null;
         List<Light> lights = context.lights();
-        return colorCall(self, SHADING.get(), new ShadeCall(context, hit), m -> {
+        return colorCall(self, SHADING.get(), new ShadeCall(self, context, hit), m -> {
             m.body.u8(Protocol.OP_SHADE);
             m.target((StandIn) self);
             Records.write(m.body, hit, m);

@@ -221,6 +221,9 @@ final class Worker {
             case Protocol.CB_SHADE_HIT:
                 serveShadeHit(in);
                 break;
+            case Protocol.CB_BRDF:
+                serveBrdf(in);
+                break;
             default:
                 throw new WireError("a callback of kind " + kind);
         }
@@ -299,6 +302,31 @@ final class Worker {
         }
         JudgeObjects.Message reply = objects.new Message();
         reply.body.u8(Protocol.RETURNED).vec(color);
+        process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+    }
+
+    /** Evaluates the BRDF of the 2019 shader whose shade call is running, for the student's light loop, and sends back its value. */
+    void serveBrdf(WireIn in) {
+        StudentCalls.ShadeCall call = StudentCalls.shading();
+        if (call == null || !(call.shader instanceof ray.shading.BrdfShader)) {
+            throw new WireError("a BRDF callback outside a 2019 shader's shade call");
+        }
+        Vec3 rhoD = in.vec();
+        Vec3 n = in.vec();
+        Vec3 l = in.vec();
+        Vec3 v = in.vec();
+        in.end();
+        Vec3 value;
+        try {
+            value = ((ray.shading.BrdfShader) call.shader).brdf().value(rhoD, n, l, v);
+        } catch (WorkerFailure e) {
+            throw e;
+        } catch (Throwable t) { // the judge's BRDF threw (a null vector the student's code passed): back through its code
+            sendThrown(t);
+            return;
+        }
+        JudgeObjects.Message reply = objects.new Message();
+        reply.body.u8(Protocol.RETURNED).vec(value);
         process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
     }
 

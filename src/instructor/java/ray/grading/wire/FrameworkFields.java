@@ -10,6 +10,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import ray.image.Image;
 import ray.math.Vec3;
 import ray.render.HitShading;
+import ray.shading.Brdf;
 import ray.shading.Texture;
 import ray.surface.Surface;
 
@@ -24,12 +25,15 @@ import ray.surface.Surface;
  * first, each class's fields by name. A surface's shader stays behind (no student method uses it,
  * and shaders are not data), and so does a shader's texture: each shade call carries the texture's
  * color at its hit instead, looked up on the judge's side ({@link Protocol#OP_SHADE}); and so does a
+ * 2019 shader's BRDF, whose values the worker asks back ({@link Protocol#CB_BRDF}); and so does a
  * ray tracer's shading of hits, which the worker asks back ({@link Protocol#CB_SHADE_HIT}). A field
  * of a type this class cannot send fails at once, so a framework change that adds one is noticed by
  * the grader's own tests.
  */
 public final class FrameworkFields {
     private static final Map<Class<?>, List<Field>> FIELDS = new ConcurrentHashMap<>();
+    /** The longest name a framework field may hold (a shader's name from the scene file), in UTF-8 bytes. */
+    private static final int MAX_NAME_BYTES = 4096;
 
     private FrameworkFields() {
     }
@@ -49,7 +53,7 @@ public final class FrameworkFields {
             List<Field> declared = new ArrayList<>();
             for (Field f : c.getDeclaredFields()) {
                 if (Modifier.isStatic(f.getModifiers()) || f.isSynthetic() || (c == Surface.class && f.getName().equals("shader"))
-                        || f.getType() == Texture.class || f.getType() == HitShading.class) {
+                        || f.getType() == Texture.class || f.getType() == HitShading.class || f.getType() == Brdf.class) {
                     continue;
                 }
                 check(f);
@@ -65,7 +69,7 @@ public final class FrameworkFields {
     private static void check(Field f) {
         Class<?> t = f.getType();
         if (t != double.class && t != int.class && t != boolean.class && t != Vec3.class && t != Image.class && t != List.class
-                && t != Surface.class) {
+                && t != Surface.class && t != String.class) {
             throw new IllegalStateException("grading cannot send " + f.getDeclaringClass().getName() + "." + f.getName()
                     + " of type " + t.getName() + "; teach ray.grading.wire.FrameworkFields that type");
         }
@@ -84,6 +88,8 @@ public final class FrameworkFields {
                     out.bool(f.getBoolean(object));
                 } else if (t == Vec3.class) {
                     out.vec((Vec3) f.get(object));
+                } else if (t == String.class) {
+                    out.str((String) f.get(object));
                 } else if (t == Image.class) {
                     refs.writeImage(out, (Image) f.get(object));
                 } else if (t == Surface.class) {
@@ -131,6 +137,8 @@ public final class FrameworkFields {
                 values.add(in.bool());
             } else if (t == Vec3.class) {
                 values.add(in.vec());
+            } else if (t == String.class) {
+                values.add(in.str(MAX_NAME_BYTES));
             } else if (t == Image.class) {
                 values.add(refs.readImage(in));
             } else if (t == Surface.class) {

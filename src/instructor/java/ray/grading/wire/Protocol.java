@@ -107,6 +107,12 @@ public final class Protocol {
     public static final int HIT_OTHER = 2;
     /** A ray tracer's shading of a hit: the hit (a record), the ray and the depth; the answer a vector. */
     public static final int CB_SHADE_HIT = 4;
+    /**
+     * A 2019 shader's BRDF value, asked during its shade call (the BRDF stays on the judge's side, so
+     * a BRDF the student got wrong in another task costs no reflection points): ρd, n, l and v; the
+     * answer a vector.
+     */
+    public static final int CB_BRDF = 5;
 
     // Answers.
     public static final int RETURNED = 0;

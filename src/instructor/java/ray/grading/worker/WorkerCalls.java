@@ -14,6 +14,7 @@ import ray.grading.wire.WireOut;
 import ray.math.Vec3;
 import ray.render.SceneTracer;
 import ray.shading.Brdf;
+import ray.shading.BrdfShader;
 import ray.shading.DirectLighting;
 import ray.shading.Light;
 import ray.shading.Shader;
@@ -161,9 +162,14 @@ final class WorkerCalls {
         Shader twin = objects.twin(handle, Shader.class);
         Vec3 color;
         try {
+            // The texture stayed on the judge's side, which sent its color at this hit; so did a 2019
+            // shader's BRDF, whose values are asked of the judge.
+            Texture given = textureColor == null ? null : new GivenColor(textureColor);
             if (twin instanceof DirectLighting) {
-                // The texture stayed on the judge's side, which sent its color at this hit.
-                ((DirectLighting) twin).setTexture(textureColor == null ? null : new GivenColor(textureColor));
+                ((DirectLighting) twin).setTexture(given);
+            } else if (twin instanceof BrdfShader) {
+                ((BrdfShader) twin).setTexture(given);
+                ((BrdfShader) twin).setBrdf(new JudgeBrdf(link, "the judge's BRDF"));
             }
             color = twin.shade(hit, ray, new JudgeShading(lights, hit, link, objects), depth);
         } catch (Throwable t) {
