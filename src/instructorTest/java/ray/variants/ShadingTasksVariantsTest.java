@@ -83,10 +83,11 @@ public class ShadingTasksVariantsTest {
         assertEachEarnsEveryPoint(List.of("ray-color-ternary", "ray-color-copied-ray"), rayColor, "a correct ray color");
     }
 
-    /** Black for the background, the hit shaded one depth deeper: each loses points of the ray-color task. */
+    /** Black for the background, the hit shaded one depth deeper, no depth limit: each loses points of the ray-color task. */
     @Test
     public void rayColorMistakesLosePointsOfTheirTask() throws Exception {
-        assertEachLosesPointsOfItsTask(List.of("ray-color-black-background", "ray-color-depth-plus-one"), rayColor);
+        assertEachLosesPointsOfItsTask(List.of("ray-color-black-background", "ray-color-depth-plus-one", "ray-color-unbounded-depth"),
+                rayColor);
     }
 
     /**

@@ -109,11 +109,15 @@ final class CountingShading extends SceneShading {
 
     @Override
     public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
-        if (!traces(hit, depth)) {
+        if (!withinDepth(depth)) {
             return Vec3.ZERO;
         }
-        stats.reflection++;
-        counter.searchingFor(SearchCounter.REFLECTION);
+        // A ray past the course's limit goes to the tracer, whose shadeRay returns black without
+        // tracing it (students' code included): it is no reflection ray.
+        if (tracedByTheCourse(depth)) {
+            stats.reflection++;
+            counter.searchingFor(SearchCounter.REFLECTION);
+        }
         return super.radiance(hit, direction, depth);
     }
 }

@@ -21,16 +21,23 @@ public class RayTracer extends SceneTracer {
         //   - shade(hit, ray, depth) has the hit surface's shader shade a hit (its lights, shadows and
         //     mirror rays, which come back here with depth + 1); pass the depth on as it is.
         //   - backgroundColor() is the color of a ray that hits nothing.
+        //   - The course limits paths of mirror rays: a ray whose depth is maxDepth() or more brings back black,
+        //     and is not traced at all.
         // HINTS steps
-        //   1) Make a new intersection record and ask the scene's surfaces for the ray's closest hit.
-        //   2) If there is none, return the background color.
-        //   3) Otherwise return the shaded hit, at the same depth.
+        //   1) If the ray is at or past the depth limit, return black.
+        //   2) Make a new intersection record and ask the scene's surfaces for the ray's closest hit.
+        //   3) If there is none, return the background color.
+        //   4) Otherwise return the shaded hit, at the same depth.
         // HINTS formulas
-        //   1) IntersectionRecord hit = new IntersectionRecord(); boolean found = surfaces().intersect(hit, ray).
-        //   2) If !found, return backgroundColor().
-        //   3) Else return shade(hit, ray, depth).
+        //   1) If depth >= maxDepth(), return Vec3.ZERO.
+        //   2) IntersectionRecord hit = new IntersectionRecord(); boolean found = surfaces().intersect(hit, ray).
+        //   3) If !found, return backgroundColor().
+        //   4) Else return shade(hit, ray, depth).
         // END HINTS
         // BEGIN SOLUTION
+        if (depth >= maxDepth()) {
+            return Vec3.ZERO; // past the course's limit on a path: black, untraced
+        }
         IntersectionRecord hit = new IntersectionRecord();
         if (!surfaces().intersect(hit, ray)) {
             return backgroundColor();

@@ -56,7 +56,7 @@ public class SceneShading implements ShadingContext {
         this.surfaces = surfaces;
         this.offsets = offsets;
         this.anyHitShadows = acceleration == Acceleration.BVH;
-        tracer.use(surfaces, scene.getBackColor(), this::shade);
+        tracer.use(surfaces, scene.getBackColor(), this::shade, courseDepthLimit(scene));
         tracer.complete();
     }
 
@@ -86,23 +86,27 @@ public class SceneShading implements ShadingContext {
     }
 
     /**
-     * Whether a mirror ray of recursion depth {@code depth} (0 for camera rays) from {@code hit} is
-     * traced: its hit would be number depth + 1, which the plan's cap allows, and, from a shader of
-     * the course's 2019 conventions, the course's own limit of {@link Course#MAX_PATH_HITS_2019} hits
-     * per path (the course's tracer returned black past it; a 2017 glaze keeps its own cap).
+     * The depth from which the course's tracer returns black ({@link SceneTracer#maxDepth()}): under
+     * 2019's conventions a path has at most {@link Course#MAX_PATH_HITS_2019} hits; 2017's has no such
+     * limit (a glaze stops its own mirror rays).
      */
-    protected boolean traces(IntersectionRecord hit, int depth) {
-        if (depth >= pathHits) {
-            return false;
-        }
-        boolean course2019 = hit != null && hit.surface != null && hit.surface.getShader() != null
-                && hit.surface.getShader().course() == Course.Y2019;
-        return !course2019 || depth < Course.MAX_PATH_HITS_2019;
+    static int courseDepthLimit(Scene scene) {
+        return scene.getCourse() == Course.Y2019 ? Course.MAX_PATH_HITS_2019 : Integer.MAX_VALUE;
+    }
+
+    /** Whether a mirror ray of recursion depth {@code depth} (0 for camera rays) is asked of the tracer: the plan's cap allows its hit, number depth + 1. */
+    protected boolean withinDepth(int depth) {
+        return depth < pathHits;
+    }
+
+    /** Whether the course's tracer traces a ray of depth {@code depth} (a correct one returns black past its limit, untraced). */
+    protected boolean tracedByTheCourse(int depth) {
+        return depth < tracer.maxDepth();
     }
 
     @Override
     public Vec3 radiance(IntersectionRecord hit, Vec3 direction, int depth) {
-        return traces(hit, depth) ? radiance(reflectionRay(hit, direction), depth) : Vec3.ZERO;
+        return withinDepth(depth) ? radiance(reflectionRay(hit, direction), depth) : Vec3.ZERO;
     }
 
     /** The shadow ray that {@link #unoccluded} traces from {@code hit} toward {@code lightPosition}. */

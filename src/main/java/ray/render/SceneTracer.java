@@ -15,12 +15,29 @@ public abstract class SceneTracer {
     private Surface surfaces;
     private Vec3 backColor = Vec3.ZERO;
     private HitShading hits;
+    private int maxDepth = Integer.MAX_VALUE;
 
-    /** Gives the tracer its scene: the surfaces (the scene's group), the background color and the shading of hits. */
+    /** Gives the tracer its scene: the surfaces (the scene's group), the background color and the shading of hits; no depth limit. */
     public void use(Surface surfaces, Vec3 backColor, HitShading hits) {
+        use(surfaces, backColor, hits, Integer.MAX_VALUE);
+    }
+
+    /** As {@link #use(Surface, Vec3, HitShading)}, with the depth from which rays bring back black ({@link #maxDepth()}). */
+    public void use(Surface surfaces, Vec3 backColor, HitShading hits, int maxDepth) {
         this.surfaces = surfaces;
         this.backColor = backColor;
         this.hits = hits;
+        this.maxDepth = maxDepth;
+    }
+
+    /**
+     * The course's limit on a path of mirror rays: a ray of depth {@code maxDepth()} or more (camera
+     * rays have depth 0) brings back black and is not traced. Under the course's 2019 conventions it
+     * is {@value ray.shading.Course#MAX_PATH_HITS_2019}, so a path has at most that many hits; under
+     * 2017's there is none ({@link Integer#MAX_VALUE}: a glaze stops its own mirror rays).
+     */
+    public int maxDepth() {
+        return maxDepth;
     }
 
     /** The scene's surfaces, as one: {@code surfaces().intersect(hit, ray)} finds the ray's closest hit. */

@@ -52,7 +52,7 @@ public final class CameraFrame {
         }
         Scene moved = scene.withParts(scene.getCamera().inFrameAt(eye), lights, surfaces);
         // A rebuilt box or mesh has new triangles, which take its shader as the loaded ones did.
-        moved.complete();
+        moved.complete(scene.getCourse());
         return moved;
     }
 }

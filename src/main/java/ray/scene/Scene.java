@@ -26,6 +26,8 @@ public class Scene {
     private double exposure = 1.0;
     private Vec3 backColor = Vec3.ZERO;
     private int samples = 1;
+    /** The course conventions it was completed by: they decide its shaders, and under 2019 the longest path. */
+    private Course course = Course.Y2017;
     private final List<Light> lights = new ArrayList<>();
     private final List<Shader> shaders = new ArrayList<>();
     private final List<Texture> textures = new ArrayList<>();
@@ -121,6 +123,12 @@ public class Scene {
             throw new IllegalArgumentException("the scene has no <image> size; expected <image>width height</image>");
         }
         ShaderInheritance.apply(surfaces, new Lambertian(Vec3.ONE).forCourse(course));
+        this.course = course;
+    }
+
+    /** The course conventions the scene was completed by (2017's until it is). */
+    public Course getCourse() {
+        return course;
     }
 
     /**
@@ -136,6 +144,7 @@ public class Scene {
         copy.setExposure(exposure);
         copy.setBackColor(backColor);
         copy.setSamples(samples);
+        copy.course = course;
         lights.forEach(copy::addLight);
         shaders.forEach(copy::addShader);
         textures.forEach(copy::addTexture);

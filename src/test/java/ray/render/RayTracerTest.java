@@ -140,4 +140,29 @@ public class RayTracerTest {
         assertEquals("a mirror's hit, half the sky it reflects", SKY.times(0.5), result);
         assertEquals("the depths shaded", List.of(0), depths);
     }
+
+    /**
+     * The course's limit on a path of mirror rays: with a limit of 5, a ray of depth 5 (or more) brings
+     * back black without a search or a shading; one of depth 4 is traced as any other.
+     */
+    @Test
+    @Points(2)
+    public void aRayAtTheDepthLimitIsBlackAndUntraced() {
+        Floor floor = new Floor();
+        Asked asked = new Asked();
+        RayTracer tracer = new RayTracer();
+        tracer.use(floor, SKY, (hit, ray, depth) -> {
+            asked.times++;
+            asked.depth = depth;
+            return v(0.2, 0.4, 0.6);
+        }, 5);
+        tracer.complete();
+        Ray down = new Ray(v(0, 0, 3), v(0, 0, -1));
+        assertEquals("shadeRay(ray, 5) with maxDepth() = 5: black", Vec3.ZERO, tracer.shadeRay(down, 5));
+        assertEquals("shadeRay(ray, 7) with maxDepth() = 5: black", Vec3.ZERO, tracer.shadeRay(down, 7));
+        assertEquals("a ray at the limit is not traced: the scene was searched", 0, floor.segments.size());
+        assertEquals("a ray at the limit is not traced: shade was asked", 0, asked.times);
+        assertEquals("shadeRay(ray, 4) with maxDepth() = 5: the shaded hit", v(0.2, 0.4, 0.6), tracer.shadeRay(down, 4));
+        assertEquals(4, asked.depth);
+    }
 }

@@ -188,7 +188,7 @@ final class WorkerCalls {
         Vec3 color;
         try {
             // The hits are shaded on the judge's side, which holds the shaders, lights and the rest of the scene.
-            twin.use(twin.surfaces(), twin.backgroundColor(), new JudgeHits(link, objects));
+            twin.use(twin.surfaces(), twin.backgroundColor(), new JudgeHits(link, objects), twin.maxDepth());
             color = twin.shadeRay(ray, depth);
         } catch (Throwable t) {
             threw(answer, t);

@@ -11,6 +11,9 @@ public class RayTracer extends SceneTracer {
 
     @Override
     public Vec3 shadeRay(Ray ray, int depth) {
+        if (depth > maxDepth() - 1) {
+            return Vec3.ZERO;
+        }
         Ray searched = new Ray(ray.origin, ray.direction, ray.start, ray.end);
         IntersectionRecord closest = new IntersectionRecord();
         boolean found = surfaces().intersect(closest, searched);

@@ -11,6 +11,9 @@ public class RayTracer extends SceneTracer {
 
     @Override
     public Vec3 shadeRay(Ray ray, int depth) {
+        if (depth >= maxDepth()) {
+            return Vec3.ZERO;
+        }
         IntersectionRecord hit = new IntersectionRecord();
         if (!surfaces().intersect(hit, ray)) {
             return backgroundColor();
