@@ -36,8 +36,8 @@ public class ReflectionShader extends BrdfShader {
         //   - The mirror coefficient k_m is getMirrorCoefficient(), per channel; when it is zero in every
         //     channel there is no mirror term and no mirror ray. Otherwise the mirror direction is the ray's
         //     direction reflected about n, context.radiance(hit, that direction, depth + 1) is the light
-        //     arriving along it (the renderer starts the ray off the surface and stops paths at the course's
-        //     limit), and Schlick's weight is k_m + (1 − k_m)(1 − n·v)^5, channel by channel.
+        //     arriving along it (the renderer starts the ray off the surface; the ray's color stops paths at
+        //     the course's limit), and Schlick's weight is k_m + (1 − k_m)(1 − n·v)^5, channel by channel.
         // HINTS steps
         //   1) Find v and n·v; if n·v is not positive, return black.
         //   2) Look up the diffuse reflectance at the hit once.
