@@ -39,13 +39,15 @@ public class ReflectionShader extends BrdfShader {
         //     arriving along it (the renderer starts the ray off the surface; the ray's color stops paths at
         //     the course's limit), and Schlick's weight is k_m + (1 − k_m)(1 − n·v)^5, channel by channel.
         // HINTS steps
-        //   1) Find v and n·v; if n·v is not positive, return black.
+        //   1) Find the unit vector toward the eye and its cosine with the normal; if that cosine is not
+        //      positive, return black.
         //   2) Look up the diffuse reflectance at the hit once.
-        //   3) For each light: the vector to it, its length squared and the unit vector l along it; skip the
-        //      light when it is at the point, when n·l is not positive or when it is blocked; otherwise add
-        //      the BRDF's value times the light's intensity times n·l, divided by the squared distance.
-        //   4) If the mirror coefficient is not zero: reflect the ray's unit direction about n, ask the
-        //      context for the light along it one depth deeper, and add it times Schlick's weight.
+        //   3) For each light: the vector to it, its length squared and the unit vector along it; skip the
+        //      light when it is at the point, when its cosine with the normal is not positive or when it is
+        //      blocked; otherwise add the BRDF's value times the light's intensity times that cosine,
+        //      divided by the squared distance.
+        //   4) If the mirror coefficient is not zero: reflect the ray's unit direction about the normal, ask
+        //      the context for the light along it one depth deeper, and add it times Schlick's weight.
         // HINTS formulas
         //   1) d = ray.direction.normalized(), v = −d, n = hit.normal; if n·v ≤ 0, return Vec3.ZERO.
         //   2) ρd = diffuseColorAt(hit).

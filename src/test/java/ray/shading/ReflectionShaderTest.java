@@ -73,20 +73,29 @@ public class ReflectionShaderTest {
         assertVec("ReflectionShader.shade at " + blocked.describe(), v(4.022259, 4.6837916, 4.6837916), blocked.shade(shiny), 1e-6);
     }
 
-    /** Seen from behind its normal (n·v < 0), the surface is black, though a light shines on its front and it is a mirror. */
+    /**
+     * Seen from behind its normal (n·v < 0), the surface is black, though a light shines on its front
+     * and it is a mirror. From the front (eye at (0, 1, 3): n·v = 3/√10) the same shader gives the
+     * light's 1/π · 10 · 1/4 plus Schlick's 0.5 + 0.5(1 − 3/√10)^5 times the mirror's 1.
+     */
     @Test
     @Points(2)
     public void seenFromBehindIsBlack() {
-        LitPoint p = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 1, -3)).light(v(0, 0, 2), v(10, 10, 10)).mirrorSees(v(1, 1, 1));
-        p.check(shader(new LambertianBrdf(), v(1, 1, 1), v(0.5, 0.5, 0.5)), Vec3.ZERO, "n·v < 0: no light and no mirror term");
-        assertEquals("mirror rays asked", 0, p.mirrorDirections.size());
+        ReflectionShader mirror = shader(new LambertianBrdf(), v(1, 1, 1), v(0.5, 0.5, 0.5));
+        LitPoint front = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 1, 3)).light(v(0, 0, 2), v(10, 10, 10)).mirrorSees(v(1, 1, 1));
+        double expected = 10 / (4 * Math.PI) + 0.5 + 0.5 * Math.pow(1 - 3 / Math.sqrt(10), 5);
+        front.check(mirror, v(expected, expected, expected), "seen from the front: the light and the mirror");
+        LitPoint behind = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 1, -3)).light(v(0, 0, 2), v(10, 10, 10)).mirrorSees(v(1, 1, 1));
+        behind.check(mirror, Vec3.ZERO, "n·v < 0: no light and no mirror term");
+        assertEquals("mirror rays asked from behind", 0, behind.mirrorDirections.size());
     }
 
-    /** A light behind the surface (n·l < 0) adds nothing, never a negative amount. */
+    /** A light behind the surface (n·l < 0) adds nothing, never a negative amount; one straight above at distance 1, I = π, adds ρd. */
     @Test
     public void aLightBehindTheSurfaceAddsNothing() {
-        LitPoint p = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 0, 3)).light(v(1, 0, -2), v(50, 50, 50));
-        p.check(shader(new LambertianBrdf(), v(1, 1, 1), NO_MIRROR), Vec3.ZERO, "max(0, n·l) = 0");
+        LitPoint p = new LitPoint(Vec3.ZERO, v(0, 0, 1), v(0, 0, 3)).light(v(1, 0, -2), v(50, 50, 50))
+                .light(v(0, 0, 1), v(Math.PI, Math.PI, Math.PI));
+        p.check(shader(new LambertianBrdf(), v(0.5, 0.25, 1), NO_MIRROR), v(0.5, 0.25, 1), "max(0, n·l) = 0 for the light behind");
     }
 
     /** A texture's color at the hit replaces ρd: a white shader with a (0.2, 0.4, 0.6) texture under a light straight above at distance 1, I = π. */
