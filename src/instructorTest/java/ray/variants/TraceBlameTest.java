@@ -106,4 +106,17 @@ public class TraceBlameTest {
         assertTrue(out, out.contains("radiance     (0, 0, 0)"));
         assertTrue(out, out.contains("the trace computed (0.35, 0.5, 0.75) for the center ray; the renderer's value above is the one in the image"));
     }
+
+    /**
+     * A 2019 reflection shader without the cosine: at pixel (100, 140) of mirror-spheres, on the left
+     * sphere, the first light falls at n·l = 0.625954, so the shader's share is the formula's over it;
+     * the mirror term is traced as the renderer does.
+     */
+    @Test
+    public void aReflectionShaderWithoutTheCosineIsShownBesideTheFormula() throws Exception {
+        String out = VariantTrace.of(Variant.wrong("reflection-no-cosine", 0), folder.getRoot().toPath(), "scenes-2019/mirror-spheres.xml",
+                100, 140, new String[] {"--course", "2019"});
+        assertTrue(out, out.contains("✗ not the formula's (0.0176514, 0.0173572, 0.0161804)"));
+        assertTrue(out, out.contains("R            (0.8, 0.8, 0.8)"));
+    }
 }

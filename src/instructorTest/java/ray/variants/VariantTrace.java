@@ -18,6 +18,11 @@ final class VariantTrace {
 
     /** What the trace prints (its standard output and error, in that order). */
     static String of(Variant variant, Path work, String scene, int x, int y) throws Exception {
+        return of(variant, work, scene, x, y, new String[0]);
+    }
+
+    /** As {@link #of(Variant, Path, String, int, int)}, with {@code options} before the scene ("--course", "2019"). */
+    static String of(Variant variant, Path work, String scene, int x, int y, String[] options) throws Exception {
         Path classes = VariantGrading.compile(variant, work);
         List<URL> urls = new ArrayList<>();
         urls.add(classes.toUri().toURL());
@@ -31,8 +36,16 @@ final class VariantTrace {
              PrintWriter e = new PrintWriter(err)) {
             Class<?> command = Class.forName("ray.cli.Ray1Command", true, loader);
             command.getMethod("run", PrintWriter.class, PrintWriter.class, String[].class)
-                    .invoke(null, o, e, new String[] {"trace", scene, String.valueOf(x), String.valueOf(y)});
+                    .invoke(null, o, e, traceArguments(options, scene, x, y));
         }
         return out + err.toString();
+    }
+
+    private static String[] traceArguments(String[] options, String scene, int x, int y) {
+        java.util.List<String> args = new java.util.ArrayList<>();
+        args.add("trace");
+        args.addAll(java.util.List.of(options));
+        args.addAll(java.util.List.of(scene, String.valueOf(x), String.valueOf(y)));
+        return args.toArray(new String[0]);
     }
 }
