@@ -20,16 +20,13 @@ public final class ProjectTree {
      * (ray.testing.ProjectFolder): without it no render test could find its scenes.
      */
     public static final List<String> PARTS = List.of("src", "scenes", "settings.gradle", ray.assignment.Assignment.PROJECT_FILE);
-    /** The folder of ray1's scenes in the course's 2019 conventions, which only a 2019 assignment's tests render. */
-    public static final String SCENES_2019 = "scenes-2019";
-
-    /** What the tests of {@code assignment} need from the project: {@link #PARTS}, and {@link #SCENES_2019} under 2019's conventions. */
+    /** What the tests of {@code assignment} need from the project: {@link #PARTS}, and scenes-2019 under 2019's conventions. */
     public static List<String> parts(ray.assignment.Assignment assignment) {
         if (!assignment.course().equals("2019")) {
             return PARTS;
         }
         List<String> parts = new java.util.ArrayList<>(PARTS);
-        parts.add(1, SCENES_2019);
+        parts.add(1, ray.scene.SceneOptions.SCENES_2019);
         return List.copyOf(parts);
     }
 

@@ -17,7 +17,6 @@ import java.util.stream.Stream;
 import org.apache.commons.compress.archivers.zip.ZipArchiveEntry;
 import org.apache.commons.compress.archivers.zip.ZipArchiveOutputStream;
 import ray.assignment.Assignment;
-import ray.grading.ProjectTree;
 import ray.grading.SolutionMarkers;
 
 /**
@@ -154,7 +153,7 @@ public final class Handout {
 
     /** Whether {@code relative} is a scene file (or reference) of a course other than the assignment's. */
     static boolean isOtherCoursesScene(String relative, Assignment assignment) {
-        return relative.startsWith(ProjectTree.SCENES_2019 + "/") && !assignment.course().equals("2019");
+        return relative.startsWith(ray.scene.SceneOptions.SCENES_2019 + "/") && !assignment.course().equals("2019");
     }
 
     /** Whether a file or folder of this name is the instructor's: its name starts with "instructor". */

@@ -33,7 +33,7 @@ public class CourseOptionTest {
     @Test
     public void renderUnder2017RefusesAMirrorSceneInOneLineAndRendersItUnder2019() {
         Path out = folder.getRoot().toPath().resolve("out");
-        CliRun y2017 = CliRun.of("render", "-o", out.toString(), MIRRORS);
+        CliRun y2017 = CliRun.of("render", "--course", "2017", "-o", out.toString(), MIRRORS);
         assertEquals(1, y2017.status);
         String[] errors = CliRun.lines(y2017.err);
         assertTrue(y2017.err, errors[0].startsWith("error: " + MIRRORS + ":37:26: <mirrorCoefficient> (lines 37 and 47) is in the"
@@ -43,6 +43,11 @@ public class CourseOptionTest {
         assertEquals(y2019.toString(), 0, y2019.status);
         assertTrue(y2019.out, y2019.out.contains("reflection(2 shaders, depth 12)"));
         assertTrue(out.resolve("mirror-spheres.png").toFile().isFile());
+        // Without --course, a scene under scenes-2019/ renders by its folder's conventions.
+        Path byFolder = folder.getRoot().toPath().resolve("by-folder");
+        CliRun shipped = CliRun.of("render", "-o", byFolder.toString(), MIRRORS);
+        assertEquals(shipped.toString(), 0, shipped.status);
+        assertTrue(byFolder.resolve("mirror-spheres.png").toFile().isFile());
     }
 
     @Test

@@ -126,4 +126,33 @@ public class SceneLoaderCourseTest {
                 + "; expected an OBJ file (a relative path in <data> starts from the scene root " + elsewhere.toAbsolutePath()
                 + " (--scene-root))", e.getMessage());
     }
+
+    /**
+     * Without a course asked for, a scene in one of ray1's scene folders loads by that folder's
+     * conventions, whatever the assignment's: under scenes-2019/ the mirror scene is 2019's, under
+     * scenes/ (even in a sub-folder) a plain Lambertian stays 2017's with a 2019 assignment; any other
+     * folder follows the assignment (2017 by default), and an asked-for course always wins.
+     */
+    @Test
+    public void aShippedScenesFolderDecidesItsCourse() {
+        String plain = "<scene>\n" + SceneFixtures.CAMERA_AND_IMAGE + "  <surface type=\"Sphere\"><shader type=\"Lambertian\"/></surface>\n</scene>\n";
+        Path mirrors = SceneFixtures.write(folder, "project/scenes-2019/mirrors.xml", MIRRORS);
+        assertTrue(shaderOf(SceneLoader.load(mirrors)) instanceof ReflectionShader);
+        Path shipped = SceneFixtures.write(folder, "project/scenes/hard/plain.xml", plain);
+        Path elsewhere = SceneFixtures.write(folder, "mine/plain.xml", plain);
+        ray.assignment.Assignment before = ray.assignment.Assignment.current();
+        try {
+            ray.assignment.Assignment.use(ray.assignment.Assignment.preset("course-2019"));
+            assertTrue(shaderOf(SceneLoader.load(shipped)) instanceof Lambertian);
+            assertTrue(shaderOf(SceneLoader.load(elsewhere)) instanceof ReflectionShader);
+            assertTrue(shaderOf(SceneLoader.load(shipped, SceneOptions.of(Course.Y2019, null))) instanceof ReflectionShader);
+        } finally {
+            ray.assignment.Assignment.use(before);
+        }
+        assertTrue(shaderOf(SceneLoader.load(elsewhere)) instanceof Lambertian);
+    }
+
+    private static Shader shaderOf(ray.scene.Scene scene) {
+        return scene.getSurfaces().children().get(0).getShader();
+    }
 }

@@ -14,7 +14,7 @@ import ray.shading.Course;
  */
 final class CourseOptions {
     @Option(names = "--course", paramLabel = "YEAR", description = "The course conventions to render by: 2017 or 2019"
-            + " (default: the assignment's, 2017 unless assignment.properties says otherwise). 2019 shades with BRDFs"
+            + " (default: a scene under scenes/ 2017, under scenes-2019/ 2019, any other the assignment's). 2019 shades with BRDFs"
             + " (Lambertian ρd/π), blackens surfaces seen from behind and reads <mirrorCoefficient>.")
     String course;
 

@@ -71,9 +71,9 @@ public final class SceneLoader {
         return load(file, SceneOptions.ofAssignment());
     }
 
-    /** Loads and checks a scene as {@code options} say. */
+    /** Loads and checks a scene as {@code options} say (a course not given is the scene's folder's, {@link SceneOptions#forFile}). */
     public static Scene load(Path file, SceneOptions options) {
-        return new SceneLoader(file, options).loadScene();
+        return new SceneLoader(file, options.forFile(file)).loadScene();
     }
 
     private Scene loadScene() {

@@ -33,22 +33,18 @@ final class RenderScenes {
      * with its one-line reason, rather than this class's initialization.
      */
     static Path folder() {
-        return ProjectFolder.resolve("scenes");
+        return ProjectFolder.resolve(SceneOptions.SCENES_2017);
     }
 
     /** The folder of the scenes of {@code course}'s conventions: scenes/ for 2017, scenes-2019/ for 2019. */
     static Path folder(Course course) {
-        return course == Course.Y2017 ? folder() : ProjectFolder.resolve("scenes-" + course.year);
+        return ProjectFolder.resolve(course == Course.Y2019 ? SceneOptions.SCENES_2019 : SceneOptions.SCENES_2017);
     }
 
-    /** The course whose conventions a scene file under {@link #folder(Course)} renders by. */
+    /** The course whose conventions a scene file under {@link #folder(Course)} renders by: its folder's. */
     static Course courseOf(Path sceneFile) {
-        for (Course course : Course.values()) {
-            if (course != Course.Y2017 && sceneFile.toAbsolutePath().normalize().startsWith(folder(course))) {
-                return course;
-            }
-        }
-        return Course.Y2017;
+        Course course = SceneOptions.courseOfFolder(sceneFile);
+        return course != null ? course : Course.Y2017;
     }
 
     /** A scene file loaded by the conventions of its folder ({@link #courseOf}), its data beside it. */
