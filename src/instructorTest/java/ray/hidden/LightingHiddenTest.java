@@ -2,19 +2,14 @@ package ray.hidden;
 
 import static org.junit.Assert.assertTrue;
 
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Random;
 import org.junit.Rule;
 import org.junit.Test;
-import ray.IntersectionRecord;
-import ray.Ray;
 import ray.math.Vec3;
 import ray.shading.DirectLighting;
 import ray.shading.Lambertian;
 import ray.shading.Light;
 import ray.shading.Phong;
-import ray.shading.ShadingContext;
 import ray.testing.Points;
 import ray.testing.StudentTaskRule;
 import ray.testing.Visibility;
@@ -33,48 +28,15 @@ public class LightingHiddenTest {
 
     private static final int CASES = 300;
 
-    /** One case: a point, its normal, the eye, the lights and which are blocked. */
-    private static final class Case {
-        final IntersectionRecord hit = new IntersectionRecord();
-        final Ray ray;
-        final List<Light> lights = new ArrayList<>();
-        final List<Boolean> blocked = new ArrayList<>();
-
+    /** One case: a point, its normal, the eye, the lights and which are blocked; no mirror rays. */
+    private static final class Case extends HiddenLitPoint<Case> {
         Case(Vec3 location, Vec3 normal, Vec3 eye) {
-            hit.location = location;
-            hit.normal = normal.normalized();
-            hit.t = 1;
-            ray = new Ray(eye, location.minus(eye));
+            super(location, normal, eye);
         }
 
-        Case light(Vec3 position, Vec3 intensity, boolean isBlocked) {
-            lights.add(new Light(position, intensity));
-            blocked.add(isBlocked);
+        @Override
+        protected Case self() {
             return this;
-        }
-
-        ShadingContext context() {
-            return new ShadingContext() {
-                @Override
-                public List<Light> lights() {
-                    return lights;
-                }
-
-                @Override
-                public boolean unoccluded(IntersectionRecord at, Vec3 position) {
-                    for (int k = 0; k < lights.size(); k++) {
-                        if (lights.get(k).getPosition().equals(position)) {
-                            return !blocked.get(k);
-                        }
-                    }
-                    return true;
-                }
-
-                @Override
-                public Vec3 radiance(IntersectionRecord at, Vec3 direction, int depth) {
-                    return Vec3.ZERO;
-                }
-            };
         }
 
         /** The formula, channel by channel: Σ (kd · max(0, n·l) + ks · max(0, n·h)^p) · I / r² over the unblocked lights. */
@@ -103,15 +65,6 @@ public class LightingHiddenTest {
                 }
             }
             return sum;
-        }
-
-        String describe() {
-            StringBuilder s = new StringBuilder("the point " + hit.location + " with normal " + hit.normal + " seen from " + ray.origin);
-            for (int k = 0; k < lights.size(); k++) {
-                s.append(k == 0 ? ", lit by " : "; ").append("a light at ").append(lights.get(k).getPosition()).append(" of intensity ")
-                        .append(lights.get(k).getIntensity()).append(blocked.get(k) ? " (blocked)" : "");
-            }
-            return s.toString();
         }
     }
 

@@ -8,14 +8,11 @@ import java.util.Random;
 import org.junit.Rule;
 import org.junit.Test;
 import ray.IntersectionRecord;
-import ray.Ray;
 import ray.math.Vec3;
 import ray.shading.Brdf;
 import ray.shading.LambertianBrdf;
-import ray.shading.Light;
 import ray.shading.PhongBrdf;
 import ray.shading.ReflectionShader;
-import ray.shading.ShadingContext;
 import ray.testing.Points;
 import ray.testing.StudentTaskRule;
 import ray.testing.Visibility;
@@ -35,53 +32,26 @@ public class ReflectionHiddenTest {
     private static final int CASES = 300;
 
     /** One case: a point, its normal, the eye, the lights (some blocked), and the color the mirror direction brings back. */
-    private static final class Case {
-        final IntersectionRecord hit = new IntersectionRecord();
-        final Ray ray;
-        final List<Light> lights = new ArrayList<>();
-        final List<Boolean> blocked = new ArrayList<>();
+    private static final class Case extends HiddenLitPoint<Case> {
         final Vec3 sky;
         final List<Vec3> mirrorDirections = new ArrayList<>();
         final List<Integer> mirrorDepths = new ArrayList<>();
 
         Case(Vec3 location, Vec3 normal, Vec3 eye, Vec3 sky) {
-            hit.location = location;
-            hit.normal = normal.normalized();
-            hit.t = 1;
-            ray = new Ray(eye, location.minus(eye));
+            super(location, normal, eye);
             this.sky = sky;
         }
 
-        Case light(Vec3 position, Vec3 intensity, boolean isBlocked) {
-            lights.add(new Light(position, intensity));
-            blocked.add(isBlocked);
+        @Override
+        protected Case self() {
             return this;
         }
 
-        ShadingContext context() {
-            return new ShadingContext() {
-                @Override
-                public List<Light> lights() {
-                    return lights;
-                }
-
-                @Override
-                public boolean unoccluded(IntersectionRecord at, Vec3 position) {
-                    for (int k = 0; k < lights.size(); k++) {
-                        if (lights.get(k).getPosition().equals(position)) {
-                            return !blocked.get(k);
-                        }
-                    }
-                    return true;
-                }
-
-                @Override
-                public Vec3 radiance(IntersectionRecord at, Vec3 direction, int depth) {
-                    mirrorDirections.add(direction);
-                    mirrorDepths.add(depth);
-                    return sky;
-                }
-            };
+        @Override
+        protected Vec3 mirror(IntersectionRecord at, Vec3 direction, int depth) {
+            mirrorDirections.add(direction);
+            mirrorDepths.add(depth);
+            return sky;
         }
 
         /** The formula: Σ f(l, v) ⊙ I · max(0, n·l)/r² over the unblocked lights, plus R ⊙ sky when k_m ≠ 0; 0 when n·v ≤ 0. */
@@ -115,13 +85,9 @@ public class ReflectionHiddenTest {
             return sum;
         }
 
+        @Override
         String describe() {
-            StringBuilder s = new StringBuilder("the point " + hit.location + " with normal " + hit.normal + " seen from " + ray.origin);
-            for (int k = 0; k < lights.size(); k++) {
-                s.append(k == 0 ? ", lit by " : "; ").append("a light at ").append(lights.get(k).getPosition()).append(" of intensity ")
-                        .append(lights.get(k).getIntensity()).append(blocked.get(k) ? " (blocked)" : "");
-            }
-            return s.append(", the mirror direction bringing back ").append(sky).toString();
+            return super.describe() + ", the mirror direction bringing back " + sky;
         }
     }
 
