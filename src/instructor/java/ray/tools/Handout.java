@@ -17,7 +17,9 @@ import java.util.stream.Stream;
 import org.apache.commons.compress.archivers.zip.ZipArchiveEntry;
 import org.apache.commons.compress.archivers.zip.ZipArchiveOutputStream;
 import ray.assignment.Assignment;
+import ray.grading.ProjectTree;
 import ray.grading.SolutionMarkers;
+import ray.scene.SceneOptions;
 
 /**
  * Builds the student handout ({@code gradle handout}): a complete Gradle project in
@@ -153,7 +155,7 @@ public final class Handout {
 
     /** Whether {@code relative} is a scene file (or reference) of a course other than the assignment's. */
     static boolean isOtherCoursesScene(String relative, Assignment assignment) {
-        return relative.startsWith(ray.scene.SceneOptions.SCENES_2019 + "/") && !assignment.course().equals("2019");
+        return relative.startsWith(SceneOptions.SCENES_2019 + "/") && !ProjectTree.parts(assignment).contains(SceneOptions.SCENES_2019);
     }
 
     /** Whether a file or folder of this name is the instructor's: its name starts with "instructor". */

@@ -6,7 +6,6 @@ import ray.Ray;
 import ray.accel.Acceleration;
 import ray.math.Vec3;
 import ray.scene.Scene;
-import ray.shading.Course;
 import ray.shading.Light;
 import ray.shading.ShadingContext;
 import ray.surface.HitGeometry;
@@ -56,7 +55,7 @@ public class SceneShading implements ShadingContext {
         this.surfaces = surfaces;
         this.offsets = offsets;
         this.anyHitShadows = acceleration == Acceleration.BVH;
-        tracer.use(surfaces, scene.getBackColor(), this::shade, courseDepthLimit(scene));
+        tracer.use(surfaces, scene.getBackColor(), this::shade, scene.getCourse().maxRayDepth());
         tracer.complete();
     }
 
@@ -83,15 +82,6 @@ public class SceneShading implements ShadingContext {
     public boolean unoccluded(IntersectionRecord hit, Vec3 lightPosition) {
         Ray shadowRay = shadowRay(hit, lightPosition);
         return anyHitShadows ? !surfaces.intersectsAny(shadowRay) : !surfaces.intersect(shadowHit, shadowRay);
-    }
-
-    /**
-     * The depth from which the course's tracer returns black ({@link SceneTracer#maxDepth()}): under
-     * 2019's conventions a path has at most {@link Course#MAX_PATH_HITS_2019} hits; 2017's has no such
-     * limit (a glaze stops its own mirror rays).
-     */
-    static int courseDepthLimit(Scene scene) {
-        return scene.getCourse() == Course.Y2019 ? Course.MAX_PATH_HITS_2019 : Integer.MAX_VALUE;
     }
 
     /** Whether a mirror ray of recursion depth {@code depth} (0 for camera rays) is asked of the tracer: the plan's cap allows its hit, number depth + 1. */

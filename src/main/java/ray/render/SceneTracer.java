@@ -32,9 +32,8 @@ public abstract class SceneTracer {
 
     /**
      * The course's limit on a path of mirror rays: a ray of depth {@code maxDepth()} or more (camera
-     * rays have depth 0) brings back black and is not traced. Under the course's 2019 conventions it
-     * is {@value ray.shading.Course#MAX_PATH_HITS_2019}, so a path has at most that many hits; under
-     * 2017's there is none ({@link Integer#MAX_VALUE}: a glaze stops its own mirror rays).
+     * rays have depth 0) brings back black and is not traced ({@link ray.shading.Course#maxRayDepth()}:
+     * 12 under 2019's conventions, none under 2017's).
      */
     public int maxDepth() {
         return maxDepth;

@@ -23,6 +23,7 @@ import ray.shading.ClampTexture;
 import ray.shading.DirectLighting;
 import ray.shading.Lambertian;
 import ray.shading.LambertianBrdf;
+import ray.shading.LambertianBrdfFormula;
 import ray.shading.Light;
 import ray.shading.Phong;
 import ray.shading.PhongBrdf;
@@ -467,15 +468,10 @@ public final class TaskProbes {
     }
 
     /** ρd/π, the probes' own BRDF: the reflection shader's probe does not depend on the students' BRDFs. */
-    private static final class ProbeBrdf implements Brdf {
+    private static final class ProbeBrdf extends LambertianBrdfFormula {
         @Override
         public Vec3 value(Vec3 rhoD, Vec3 n, Vec3 l, Vec3 v) {
             return rhoD.times(1 / Math.PI);
-        }
-
-        @Override
-        public String formula() {
-            return "ρd/π";
         }
     }
 

@@ -27,6 +27,15 @@ public enum Course {
     /** In 2019, a camera ray's hit is the first of at most this many along a path of mirror rays. */
     public static final int MAX_PATH_HITS_2019 = 12;
 
+    /**
+     * The depth from which the course's tracer returns black, untraced (camera rays have depth 0):
+     * under 2019's conventions a path has at most {@link #MAX_PATH_HITS_2019} hits; 2017's has no
+     * such limit ({@link Integer#MAX_VALUE}: a glaze stops its own mirror rays).
+     */
+    public int maxRayDepth() {
+        return this == Y2019 ? MAX_PATH_HITS_2019 : Integer.MAX_VALUE;
+    }
+
     /** The year, as the assignment file and {@code --course} write it. */
     public final String year;
 

@@ -16,6 +16,7 @@ import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
 import ray.math.Vec3;
+import ray.shading.BrdfShader;
 import ray.surface.Surface;
 
 /**
@@ -300,15 +301,13 @@ final class Worker {
             sendThrown(t);
             return;
         }
-        JudgeObjects.Message reply = objects.new Message();
-        reply.body.u8(Protocol.RETURNED).vec(color);
-        process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+        sendColor(color);
     }
 
     /** Evaluates the BRDF of the 2019 shader whose shade call is running, for the student's light loop, and sends back its value. */
     void serveBrdf(WireIn in) {
         StudentCalls.ShadeCall call = StudentCalls.shading();
-        if (call == null || !(call.shader instanceof ray.shading.BrdfShader)) {
+        if (call == null || !(call.shader instanceof BrdfShader)) {
             throw new WireError("a BRDF callback outside a 2019 shader's shade call");
         }
         Vec3 rhoD = in.vec();
@@ -318,15 +317,20 @@ final class Worker {
         in.end();
         Vec3 value;
         try {
-            value = ((ray.shading.BrdfShader) call.shader).brdf().value(rhoD, n, l, v);
+            value = ((BrdfShader) call.shader).brdf().value(rhoD, n, l, v);
         } catch (WorkerFailure e) {
             throw e;
         } catch (Throwable t) { // the judge's BRDF threw (a null vector the student's code passed): back through its code
             sendThrown(t);
             return;
         }
+        sendColor(value);
+    }
+
+    /** Answers a callback whose answer is a color. */
+    private void sendColor(Vec3 color) {
         JudgeObjects.Message reply = objects.new Message();
-        reply.body.u8(Protocol.RETURNED).vec(value);
+        reply.body.u8(Protocol.RETURNED).vec(color);
         process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
     }
 
