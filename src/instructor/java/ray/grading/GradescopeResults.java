@@ -119,17 +119,21 @@ public final class GradescopeResults {
     /**
      * The console table: one row per task with its regular tests passed and points, and the bonus
      * points earned of those offered ("-" for a task without bonus tests), the totals, then the score
-     * and what it is made of: "Score: 151 / 150 (148 regular + 3 bonus)".
+     * and what it is made of: "Score: 151 / 150 (148 regular + 3 bonus)". An extra-credit task, whose
+     * tests are all bonus tests, shows those passed and "-" for its regular points.
      */
     public static String table(List<TestOutcome> outcomes) {
-        // Per task: regular tests passed, regular tests, points earned, points possible, bonus earned, bonus offered.
+        // Per task: regular tests passed, regular tests, points earned, points possible, bonus earned, bonus offered,
+        // bonus tests passed, bonus tests.
         Map<Integer, double[]> byTask = new TreeMap<>();
         Map<Integer, String> titles = new TreeMap<>();
         for (TestOutcome t : outcomes) {
-            double[] row = byTask.computeIfAbsent(t.task(), k -> new double[6]);
+            double[] row = byTask.computeIfAbsent(t.task(), k -> new double[8]);
             if (t.bonus()) {
                 row[4] += t.earned();
                 row[5] += t.points();
+                row[6] += t.passed() ? 1 : 0;
+                row[7] += 1;
             } else {
                 row[0] += t.passed() ? 1 : 0;
                 row[1] += 1;
@@ -139,7 +143,7 @@ public final class GradescopeResults {
             titles.put(t.task(), t.taskTitle());
         }
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%-24s %12s  %9s%6s  %8s%n", "task", "tests passed", "points", "", "bonus"));
-        double[] total = new double[6];
+        double[] total = new double[8];
         for (Map.Entry<Integer, double[]> e : byTask.entrySet()) {
             double[] r = e.getValue();
             s.append(row("Task " + e.getKey() + " (" + titles.get(e.getKey()) + ")", r));
@@ -147,7 +151,8 @@ public final class GradescopeResults {
                 total[k] += r[k];
             }
         }
-        s.append(row("total", total));
+        // The totals' tests are the regular ones, beside the regular points.
+        s.append(row("total", new double[] {total[0], total[1], total[2], total[3], total[4], total[5], 0, 0}));
         s.append("Score: ").append(number(total[2] + total[4])).append(" / ").append(number(total[3]));
         if (total[5] > 0) {
             s.append(" (").append(number(total[2])).append(" regular + ").append(number(total[4])).append(" bonus)");
@@ -159,6 +164,10 @@ public final class GradescopeResults {
     /** One line of the table; trailing blanks dropped, since the bonus column is often empty. */
     private static String row(String name, double[] r) {
         String bonus = r[5] > 0 ? String.format(Locale.ROOT, "%6s / %-6s", number(r[4]), number(r[5])) : String.format("%6s", "-");
+        if (r[1] == 0 && r[7] > 0) { // all extra credit
+            return String.format(Locale.ROOT, "%-24s %5d / %-4d  %15s  %s", name, (int) r[6], (int) r[7], "-", bonus).stripTrailing()
+                    + System.lineSeparator();
+        }
         return String.format(Locale.ROOT, "%-24s %5d / %-4d  %6s / %-6s  %s", name, (int) r[0], (int) r[1], number(r[2]),
                 number(r[3]), bonus).stripTrailing() + System.lineSeparator();
     }

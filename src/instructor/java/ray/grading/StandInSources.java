@@ -22,18 +22,19 @@ import javax.tools.ToolProvider;
 
 /**
  * The judge's class for a student class, written from the instructor's file itself (the solution,
- * whose markers are comments): the same class, whose method that holds the {@code TODO(Task N)}
- * comment first asks whether task N is being graded, and then calls the worker
+ * whose markers are comments): the same class, whose methods that hold a {@code TODO(Task N)}
+ * comment first ask whether task N is being graded, and then call the worker
  * (ray.grading.judge.StudentCalls) instead of running the solution, and with the members of
  * ray.grading.judge.StandIn added: the object's bookkeeping, a complete() that notes it ran, and
  * whether its calls go to the worker. So one judge grades every task, each with the solution of
  * every other, and the stand-ins follow the student files with no list to keep: a new task's file gets
- * its stand-in as long as its method is one StudentCalls can forward ({@link #FORWARDS}).
+ * its stand-in as long as each of its methods is one StudentCalls can forward ({@link #FORWARDS}).
  */
 final class StandInSources {
     /** The student methods the judge can forward, by name and parameter count, and StudentCalls' method for each. */
     static final Map<String, String> FORWARDS = Map.of("intersect/2", "intersect", "generateRay/2", "generateRay", "getTexColor/2", "texColor",
-            "shade/4", "shade", "shadeRay/2", "shadeRay", "value/4", "brdfValue");
+            "shade/4", "shade", "shadeRay/2", "shadeRay", "value/4", "brdfValue", "normalDistribution/2", "normalDistribution",
+            "masking/3", "masking", "reflectance/1", "reflectance");
 
     private StandInSources() {
     }
@@ -69,40 +70,42 @@ final class StandInSources {
         if (type == null) {
             throw new IllegalStateException(path + " declares no class " + className);
         }
-        MethodTree studentMethod = null;
+        // Every method that holds a TODO is the student's (a distribution's D and G1 are two in one file).
+        List<MethodTree> studentMethods = new ArrayList<>();
         for (Tree member : type.getMembers()) {
             if (member instanceof MethodTree && ((MethodTree) member).getBody() != null) {
                 MethodTree m = (MethodTree) member;
                 String body = stub.substring((int) positions.getStartPosition(unit, m), (int) positions.getEndPosition(unit, m));
                 if (body.contains("TODO(Task")) {
-                    if (studentMethod != null) {
-                        throw new IllegalStateException(path + " has two methods with a TODO(Task N): a stand-in forwards one");
-                    }
-                    studentMethod = m;
+                    studentMethods.add(m);
                 }
             }
         }
-        if (studentMethod == null) {
+        if (studentMethods.isEmpty()) {
             throw new IllegalStateException(path + " has no method with a TODO(Task N) comment");
         }
-        List<String> parameters = studentMethod.getParameters().stream().map(v -> ((VariableTree) v).getName().toString())
-                .collect(Collectors.toList());
-        String key = studentMethod.getName() + "/" + parameters.size();
-        String forward = FORWARDS.get(key);
-        if (forward == null) {
-            throw new IllegalStateException(path + ": grading cannot forward " + studentMethod.getName() + " with " + parameters.size()
-                    + " parameters to the worker; teach ray.grading.judge.StudentCalls to");
-        }
-        boolean surface = forward.equals("intersect");
         // Edits by position, made from the end so that earlier positions stay valid.
         TreeMap<Integer, String[]> edits = new TreeMap<>();
+        boolean surface = false;
+        for (MethodTree studentMethod : studentMethods) {
+            List<String> parameters = studentMethod.getParameters().stream().map(v -> ((VariableTree) v).getName().toString())
+                    .collect(Collectors.toList());
+            String key = studentMethod.getName() + "/" + parameters.size();
+            String forward = FORWARDS.get(key);
+            if (forward == null) {
+                throw new IllegalStateException(path + ": grading cannot forward " + studentMethod.getName() + " with " + parameters.size()
+                        + " parameters to the worker; teach ray.grading.judge.StudentCalls to");
+            }
+            surface |= forward.equals("intersect");
+            // Right after the method's opening brace: while task N is graded, the worker answers.
+            int bodyStart = (int) positions.getStartPosition(unit, studentMethod.getBody()) + 1;
+            String arguments = parameters.isEmpty() ? "" : ", " + String.join(", ", parameters);
+            edits.put(bodyStart, new String[] {"", "\n        if (StudentCalls.remote(" + task + ")) {\n            return StudentCalls." + forward
+                    + "(this" + arguments + ");\n        }"});
+        }
         int classEnd = (int) positions.getEndPosition(unit, type) - 1;
         String packageName = unit.getPackageName() == null ? "" : unit.getPackageName().toString() + ".";
         edits.put(classEnd, new String[] {"", members(surface, task, packageName + className)});
-        // Right after the method's opening brace: while task N is graded, the worker answers.
-        int bodyStart = (int) positions.getStartPosition(unit, studentMethod.getBody()) + 1;
-        edits.put(bodyStart, new String[] {"", "\n        if (StudentCalls.remote(" + task + ")) {\n            return StudentCalls." + forward
-                + "(this, " + String.join(", ", parameters) + ");\n        }"});
         List<? extends Tree> interfaces = type.getImplementsClause();
         Tree after = interfaces.isEmpty() ? type.getExtendsClause() : interfaces.get(interfaces.size() - 1);
         if (after == null) {

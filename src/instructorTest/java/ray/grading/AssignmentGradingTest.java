@@ -108,6 +108,6 @@ public class AssignmentGradingTest {
         }
         assertEquals(1, status);
         assertTrue(err.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8).contains(
-                "there is no task \"bvh\"; the tasks are camera-rays, ray-color, group, sphere, lighting, brdfs, reflection, triangle, textures, cylinder"));
+                "there is no task \"bvh\"; the tasks are camera-rays, ray-color, group, sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder"));
     }
 }

@@ -134,6 +134,17 @@ public class GradescopeResultsTest {
         assertEquals("Score: 6.5 / 10 (5 regular + 1.5 bonus)", lines.get(5));
     }
 
+    /** A task whose tests are all extra credit counts those passed in its row, "-" for its regular points; the totals count regular tests. */
+    @Test
+    public void anExtraCreditTaskShowsItsBonusTestsPassed() {
+        List<TestOutcome> outcomes = new java.util.ArrayList<>(OUTCOMES);
+        outcomes.add(new TestOutcome("ray.shading.X#a", "ray.shading.X", "a", 5, "Cylinder", 2, true, "visible", true, "", 0.1));
+        outcomes.add(new TestOutcome("ray.shading.X#b", "ray.shading.X", "b", 5, "Cylinder", 2, true, "visible", false, "[Task 5] no", 0.1));
+        List<String> lines = GradescopeResults.table(outcomes).lines().toList();
+        assertRow(lines.get(4), "Task 5 (Cylinder)", "1 / 2", "-", "2 / 4");
+        assertRow(lines.get(5), "total", "2 / 4", "5 / 10", "3.5 / 6.5");
+    }
+
     private static void assertRow(String line, String task, String tests, String points, String bonus) {
         String cells = line.substring(24).trim().replaceAll(" +", " ");
         assertEquals(line, task, line.substring(0, 24).trim());

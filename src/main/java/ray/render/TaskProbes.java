@@ -18,13 +18,18 @@ import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
 import ray.image.Image;
 import ray.math.Vec3;
+import ray.shading.BeckmannDistribution;
 import ray.shading.Brdf;
 import ray.shading.ClampTexture;
 import ray.shading.DirectLighting;
+import ray.shading.Fresnel;
+import ray.shading.GgxDistribution;
 import ray.shading.Lambertian;
 import ray.shading.LambertianBrdf;
 import ray.shading.LambertianBrdfFormula;
 import ray.shading.Light;
+import ray.shading.MicrofacetBrdf;
+import ray.shading.MicrofacetDistribution;
 import ray.shading.Phong;
 import ray.shading.PhongBrdf;
 import ray.shading.ReflectionShader;
@@ -71,6 +76,10 @@ public final class TaskProbes {
         LAMBERTIAN_BRDF("LambertianBrdf"),
         PHONG_BRDF("PhongBrdf"),
         REFLECTION_SHADER("ReflectionShader"),
+        BECKMANN_DISTRIBUTION("BeckmannDistribution"),
+        GGX_DISTRIBUTION("GgxDistribution"),
+        FRESNEL("Fresnel"),
+        MICROFACET_BRDF("MicrofacetBrdf"),
         CYLINDER("Cylinder");
 
         /** Its task's id in the table. */
@@ -166,6 +175,17 @@ public final class TaskProbes {
                     // formula, so that a stub of that task does not make this one look like a stub), no mirror term.
                     return lighting(new ReflectionShader("probe", new ProbeBrdf(), new Vec3(0.5, 0.25, 1), null, Vec3.ZERO, null, null),
                             new Vec3(0.5 / Math.PI, 0.25 / Math.PI, 1 / Math.PI));
+                case BECKMANN_DISTRIBUTION:
+                    return distribution(new BeckmannDistribution(0.5));
+                case GGX_DISTRIBUTION:
+                    return distribution(new GgxDistribution(0.5));
+                case FRESNEL:
+                    return fresnel();
+                case MICROFACET_BRDF:
+                    // Light and eye along n: h = n, F = R0 = 0.04 (nt 1.5), D = 1/(πα²), G1 = 1, so
+                    // f = ρd/π + k_mf · 0.04/(4π · 0.25) = ρd/π + 0.04/π.
+                    return brdf(new MicrofacetBrdf(Vec3.ONE, MicrofacetDistribution.GGX, 0.5, 1.5),
+                            new Vec3(0.54 / Math.PI, 0.29 / Math.PI, 1.04 / Math.PI));
                 default:
                     throw new AssertionError(part);
             }
@@ -476,6 +496,32 @@ public final class TaskProbes {
     }
 
     /** A BRDF's value for ρd = (0.5, 0.25, 1) with light and eye along the normal, and with both slanted. */
+    /** D and G1 along the normal (α = 0.5): D = 1/(πα²) = 4/π, G1 = 1; the stub's 0 for both. */
+    private static Finding distribution(MicrofacetDistribution distribution) {
+        Vec3 n = new Vec3(0, 0, 1);
+        double d = distribution.normalDistribution(n, n);
+        double g1 = distribution.masking(n, n, n);
+        boolean stub = d == 0 && g1 == 0;
+        String name = distribution.getClass().getSimpleName();
+        String problem = !close(d, 4 / Math.PI) ? name + ".normalDistribution(n, n) with α = 0.5 returned " + d + "; expected 1/(πα²) = " + 4 / Math.PI
+                : !close(g1, 1) ? name + ".masking(n, n, n) with α = 0.5 returned " + g1 + "; expected 1 (nothing is hidden along the normal)" : null;
+        return new Finding(stub, problem);
+    }
+
+    /** F head on (nt = 1.5): R0 = 0.04; the stub's 0, also at grazing (where F is 1). */
+    private static Finding fresnel() {
+        Fresnel fresnel = new Fresnel(1.5);
+        double head = fresnel.reflectance(1);
+        double grazing = fresnel.reflectance(0);
+        boolean stub = head == 0 && grazing == 0;
+        String problem = close(head, 0.04) ? null : "Fresnel.reflectance(1) with nt = 1.5 returned " + head + "; expected R0 = ((nt − 1)/(nt + 1))² = 0.04";
+        return new Finding(stub, problem);
+    }
+
+    private static boolean close(double value, double expected) {
+        return Math.abs(value - expected) <= 1e-9 * Math.max(1, Math.abs(expected));
+    }
+
     private static Finding brdf(Brdf brdf, Vec3 expected) {
         Vec3 rhoD = new Vec3(0.5, 0.25, 1);
         Vec3 n = new Vec3(0, 0, 1);
@@ -484,7 +530,8 @@ public final class TaskProbes {
         boolean stub = isBlack(head) && isBlack(slanted);
         String problem = head != null && close(head, expected) ? null
                 : brdf.getClass().getSimpleName() + ".value returned " + head + " for ρd = (0.5, 0.25, 1)"
-                        + (brdf instanceof PhongBrdf ? ", ks = (1, 1, 1), p = 10" : "") + " with the light and the eye along the normal; expected "
+                        + (brdf instanceof PhongBrdf ? ", ks = (1, 1, 1), p = 10" : "")
+                        + (brdf instanceof MicrofacetBrdf ? ", k_mf = (1, 1, 1), GGX with α = 0.5, nt = 1.5" : "") + " with the light and the eye along the normal; expected "
                         + expected;
         return new Finding(stub, problem);
     }

@@ -4,6 +4,7 @@ import java.util.List;
 import ray.camera.Camera;
 import ray.shading.Shader;
 import ray.shading.Texture;
+import ray.shading.legacy.MicrofacetBrdfElement;
 import ray.surface.Surface;
 
 /**
@@ -19,13 +20,16 @@ final class KnownTypes {
             return List.of("Sphere", "Triangle", "Box", "Mesh", "Cylinder", "Group");
         }
         if (base == Shader.class) {
-            return List.of("Lambertian", "Phong", "RGBNormals", "Glazed");
+            return List.of("Lambertian", "Phong", "MicrofacetBeckmann", "MicrofacetGGX", "Microfacet", "RGBNormals", "Glazed");
         }
         if (base == Texture.class) {
             return List.of("RepeatTexture", "ClampTexture");
         }
         if (base == Camera.class) {
             return List.of("PerspectiveCamera", "OrthographicCamera");
+        }
+        if (base == MicrofacetBrdfElement.class) {
+            return List.of("Beckmann", "GGX");
         }
         return List.of(base.getSimpleName());
     }

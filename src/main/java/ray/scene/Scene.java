@@ -11,6 +11,7 @@ import ray.shading.Lambertian;
 import ray.shading.Light;
 import ray.shading.Shader;
 import ray.shading.Texture;
+import ray.shading.legacy.MicrofacetBrdfElement;
 import ray.surface.Group;
 import ray.surface.HitGeometry;
 import ray.surface.Placements;
@@ -91,6 +92,14 @@ public class Scene {
     public void addShader(Shader shader) {
         cameraFrame = null;
         shaders.add(shader);
+    }
+
+    /**
+     * A named microfacet BRDF defined at the top level, as the older course scenes write one, for
+     * their Microfacet shaders to reuse by ref; those shaders keep what they need of it.
+     */
+    public void addBrdf(MicrofacetBrdfElement brdf) {
+        cameraFrame = null;
     }
 
     /** A named texture defined at the top level, for shaders to reuse by ref. */

@@ -53,6 +53,17 @@ public abstract class BrdfShader extends Shader {
         this.brdf = brdf;
     }
 
+    /** {@code km} if each channel is from 0 to 1, as a scene's mirror coefficient must be; else a one-line error. */
+    static Vec3 checkedMirrorCoefficient(Vec3 km) {
+        for (int axis = 0; axis < 3; axis++) {
+            double k = km.get(axis);
+            if (!(k >= 0 && k <= 1)) {
+                throw new IllegalArgumentException("mirrorCoefficient is " + km + "; expected three numbers from 0 to 1");
+            }
+        }
+        return km;
+    }
+
     /** k_m, each channel from 0 to 1: the mirror term's weight head on. */
     public Vec3 getMirrorCoefficient() {
         return mirrorCoefficient;

@@ -35,14 +35,7 @@ public abstract class DirectLighting extends Shader {
      */
     @OnlyInCourse("2019")
     public void setMirrorCoefficient(Vec3 mirrorCoefficient) {
-        for (int axis = 0; axis < 3; axis++) {
-            double k = mirrorCoefficient.get(axis);
-            if (!(k >= 0 && k <= 1)) {
-                throw new IllegalArgumentException("mirrorCoefficient is " + mirrorCoefficient
-                        + "; expected three numbers from 0 to 1");
-            }
-        }
-        this.mirrorCoefficient = mirrorCoefficient;
+        this.mirrorCoefficient = BrdfShader.checkedMirrorCoefficient(mirrorCoefficient);
     }
 
     public Vec3 getMirrorCoefficient() {

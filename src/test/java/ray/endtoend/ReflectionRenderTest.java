@@ -14,7 +14,7 @@ import ray.testing.StudentTaskRule;
 @Points(2)
 public class ReflectionRenderTest extends RenderTestBase {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(getClass()).withTimeoutSeconds(TIMEOUT_SECONDS);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass()).withTimeoutSeconds(MIRROR_PATHS_TIMEOUT_SECONDS);
 
     public ReflectionRenderTest(String scene) {
         super(scene);

@@ -14,7 +14,9 @@ import ray.grading.wire.WireIn;
 import ray.math.Vec3;
 import ray.render.SceneTracer;
 import ray.shading.Brdf;
+import ray.shading.Fresnel;
 import ray.shading.Light;
+import ray.shading.MicrofacetDistribution;
 import ray.shading.Shader;
 import ray.shading.ShadingContext;
 import ray.shading.Texture;
@@ -111,6 +113,21 @@ public final class StudentCalls {
     /** The student's BRDF {@code value(rhoD, n, l, v)} on {@code self}'s twin, asked at once. */
     public static Vec3 brdfValue(Brdf self, Vec3 rhoD, Vec3 n, Vec3 l, Vec3 v) {
         return (Vec3) valueCall(self, Protocol.OP_BRDF_VALUE, body -> body.vec(rhoD).vec(n).vec(l).vec(v), WireIn::vec);
+    }
+
+    /** The student's microfacet distribution's {@code normalDistribution(n, h)}, D, on {@code self}'s twin, asked at once. */
+    public static double normalDistribution(MicrofacetDistribution self, Vec3 n, Vec3 h) {
+        return (Double) valueCall(self, Protocol.OP_MICROFACET_D, body -> body.vec(n).vec(h), WireIn::f64);
+    }
+
+    /** The student's microfacet distribution's {@code masking(x, n, h)}, G1, on {@code self}'s twin, asked at once. */
+    public static double masking(MicrofacetDistribution self, Vec3 x, Vec3 n, Vec3 h) {
+        return (Double) valueCall(self, Protocol.OP_MICROFACET_G1, body -> body.vec(x).vec(n).vec(h), WireIn::f64);
+    }
+
+    /** The student's Fresnel factor's {@code reflectance(cosine)}, F, on {@code self}'s twin, asked at once. */
+    public static double reflectance(Fresnel self, double cosine) {
+        return (Double) valueCall(self, Protocol.OP_FRESNEL, body -> body.f64(cosine), WireIn::f64);
     }
 
     /** A call {@code op}(u, v) on {@code self}'s twin, asked at once: what it returned, read by {@code value}, or what it threw, rethrown. */

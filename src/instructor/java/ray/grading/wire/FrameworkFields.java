@@ -11,6 +11,8 @@ import ray.image.Image;
 import ray.math.Vec3;
 import ray.render.HitShading;
 import ray.shading.Brdf;
+import ray.shading.Fresnel;
+import ray.shading.MicrofacetDistribution;
 import ray.shading.Texture;
 import ray.surface.Surface;
 
@@ -53,7 +55,9 @@ public final class FrameworkFields {
             List<Field> declared = new ArrayList<>();
             for (Field f : c.getDeclaredFields()) {
                 if (Modifier.isStatic(f.getModifiers()) || f.isSynthetic() || (c == Surface.class && f.getName().equals("shader"))
-                        || f.getType() == Texture.class || f.getType() == HitShading.class || f.getType() == Brdf.class) {
+                        || f.getType() == Texture.class || f.getType() == HitShading.class || f.getType() == Brdf.class
+                        // a microfacet BRDF's D, G1 and F objects: each side makes its own from the fields' names and numbers
+                        || f.getType() == MicrofacetDistribution.class || f.getType() == Fresnel.class) {
                     continue;
                 }
                 check(f);

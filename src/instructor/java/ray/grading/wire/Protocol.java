@@ -28,7 +28,7 @@ public final class Protocol {
     public static final int EXITING = 14;
 
     /** The first bytes of READY's payload: both sides must be built from the same grading code. */
-    public static final String VERSION = "ray1-grading-wire-3";
+    public static final String VERSION = "ray1-grading-wire-4";
 
     // Definitions, sent ahead of the calls that use them.
     /** A twin: the student's class made by its no-argument constructor (handle, class name). */
@@ -89,6 +89,12 @@ public final class Protocol {
      * its framework state) and the four vectors; the answer a vector. A pure function: no callbacks.
      */
     public static final int OP_BRDF_VALUE = 6;
+    /** A microfacet distribution's D: n and h; the answer a number. */
+    public static final int OP_MICROFACET_D = 7;
+    /** A microfacet distribution's G1: x, n and h; the answer a number. */
+    public static final int OP_MICROFACET_G1 = 8;
+    /** A Fresnel factor's reflectance: the cosine; the answer a number. */
+    public static final int OP_FRESNEL = 9;
 
     // What a callback asks (its first byte), worker to judge, during a call.
     /** A judge-side surface's intersect: its handle, the ray, the record. */

@@ -16,7 +16,9 @@ import ray.render.SceneTracer;
 import ray.shading.Brdf;
 import ray.shading.BrdfShader;
 import ray.shading.DirectLighting;
+import ray.shading.Fresnel;
 import ray.shading.Light;
+import ray.shading.MicrofacetDistribution;
 import ray.shading.Shader;
 import ray.shading.Texture;
 import ray.surface.Surface;
@@ -61,6 +63,11 @@ final class WorkerCalls {
                     break;
                 case Protocol.OP_BRDF_VALUE:
                     brdfValue(in, answer);
+                    break;
+                case Protocol.OP_MICROFACET_D:
+                case Protocol.OP_MICROFACET_G1:
+                case Protocol.OP_FRESNEL:
+                    microfacetTerm(op, in, answer);
                     break;
                 default:
                     throw new WireError("a call of kind " + op);
@@ -213,6 +220,36 @@ final class WorkerCalls {
             return;
         }
         answer.u8(Protocol.RETURNED).vec(value);
+    }
+
+    /** D, G1 or F of the student's microfacet BRDF: a number of the twin's, from vectors or a cosine. */
+    private void microfacetTerm(int op, WireIn in, WireOut answer) {
+        int handle = target(in);
+        double value;
+        if (op == Protocol.OP_FRESNEL) {
+            double cosine = in.f64();
+            in.end();
+            Fresnel twin = objects.twin(handle, Fresnel.class);
+            try {
+                value = twin.reflectance(cosine);
+            } catch (Throwable t) {
+                threw(answer, t);
+                return;
+            }
+        } else {
+            Vec3 x = op == Protocol.OP_MICROFACET_G1 ? in.vec() : null;
+            Vec3 n = in.vec();
+            Vec3 h = in.vec();
+            in.end();
+            MicrofacetDistribution twin = objects.twin(handle, MicrofacetDistribution.class);
+            try {
+                value = op == Protocol.OP_MICROFACET_G1 ? twin.masking(x, n, h) : twin.normalDistribution(n, h);
+            } catch (Throwable t) {
+                threw(answer, t);
+                return;
+            }
+        }
+        answer.u8(Protocol.RETURNED).f64(value);
     }
 
     /** What the student's code threw; a judge-side surface's exception, or a broken twin's, passes on as it was. */

@@ -1,0 +1,63 @@
+package ray.shading;
+
+import ray.math.Vec3;
+
+/**
+ * What the framework keeps of the course's microfacet BRDF ({@link MicrofacetBrdf}, whose
+ * {@code value} students write): the microfacet color k_mf, which distribution of facet normals it
+ * uses (D and G1) with its roughness α, and the refractive index nt of its Fresnel factor F; and the
+ * formula as {@code ray1 trace} writes it. It keeps the distribution by name and numbers rather than as
+ * an object, and makes the objects where they are asked for, so a copy of it (the grader's) makes
+ * its own.
+ */
+public abstract class MicrofacetBrdfParameters implements Brdf {
+    private Vec3 microfacetColor = Vec3.ONE;
+    private String distributionName = MicrofacetDistribution.BECKMANN;
+    private double alpha = 1;
+    private double nt = 1.5;
+    private MicrofacetDistribution distribution;
+    private Fresnel fresnel;
+
+    protected MicrofacetBrdfParameters() {
+    }
+
+    /**
+     * @param distributionName {@code "Beckmann"} or {@code "GGX"}
+     * @param alpha            the distribution's roughness, > 0
+     * @param nt               the Fresnel factor's refractive index, > 0
+     */
+    protected MicrofacetBrdfParameters(Vec3 microfacetColor, String distributionName, double alpha, double nt) {
+        this.microfacetColor = microfacetColor;
+        this.distributionName = distributionName;
+        this.alpha = alpha;
+        this.nt = nt;
+        distribution();
+        fresnel();
+    }
+
+    /** k_mf: the color of the facets' reflection, per channel. */
+    public Vec3 getMicrofacetColor() {
+        return microfacetColor;
+    }
+
+    /** D and G1: {@code distribution().normalDistribution(n, h)} and {@code distribution().masking(x, n, h)}. */
+    public MicrofacetDistribution distribution() {
+        if (distribution == null) {
+            distribution = MicrofacetDistribution.named(distributionName, alpha);
+        }
+        return distribution;
+    }
+
+    /** F: {@code fresnel().reflectance(cosine)}. */
+    public Fresnel fresnel() {
+        if (fresnel == null) {
+            fresnel = new Fresnel(nt);
+        }
+        return fresnel;
+    }
+
+    @Override
+    public String formula() {
+        return "ρd/π + k_mf·F·D·G1(l)·G1(v) / (4|n·l||n·v|)";
+    }
+}
