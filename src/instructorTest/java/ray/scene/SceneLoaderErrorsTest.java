@@ -42,7 +42,7 @@ import org.junit.runners.Parameterized.Parameters;
 @RunWith(Parameterized.class)
 public class SceneLoaderErrorsTest {
     private static final String SURFACE_TYPES = "Sphere, Triangle, Box, Mesh, Cylinder, Group";
-    private static final String SHADER_TYPES = "Lambertian, Phong, RGBNormals, Glazed";
+    private static final String SHADER_TYPES = "Lambertian, Phong, MicrofacetBeckmann, MicrofacetGGX, Microfacet, RGBNormals, Glazed";
     private static final String THREE_CENTER_NUMBERS = "three numbers, e.g. <center>1 0 -2.5</center>";
     private static final String SHADER_BLUE = "  <shader name=\"blue\" type=\"Lambertian\"/>\n";
 
@@ -55,7 +55,7 @@ public class SceneLoaderErrorsTest {
                         "unknown element <radus> in a Sphere (did you mean <radius>?); expected one of center, radius, rotate, scale, shader, translate"),
                 row("unknown element far from any name lists the expected ones", body("  <sphere/>\n"), 4, 12,
                         "unknown element <sphere> in <scene>;"
-                                + " expected one of backColor, camera, exposure, image, light, samples, shader, surface, texture"),
+                                + " expected one of backColor, brdf, camera, exposure, image, light, samples, shader, surface, texture"),
                 row("property of the other camera type is unknown", camera("OrthographicCamera", "<projDistance>2</projDistance>"), 3, 19, "unknown element <projDistance> in an OrthographicCamera;"
                                 + " expected one of viewDir, viewHeight, viewPoint, viewUp, viewWidth"),
                 row("misspelled type suggests the closest one", body("""

@@ -6,14 +6,18 @@ import java.util.Set;
 import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
-import ray.surface.SurfaceKind;
 import ray.render.RenderPlan;
 import ray.render.TaskProbes;
 import ray.render.TaskProbes.Part;
 import ray.scene.Scene;
+import ray.shading.BrdfShader;
 import ray.shading.Effect;
-import ray.shading.ReflectionShader;
+import ray.shading.LambertianBrdf;
+import ray.shading.MicrofacetBrdf;
+import ray.shading.PhongBrdf;
+import ray.shading.Shader;
 import ray.surface.Surface;
+import ray.surface.SurfaceKind;
 import ray.testing.StudentTask;
 
 /**
@@ -45,14 +49,22 @@ final class BasicChecks {
         if (plan.runs(Effect.TEXTURES)) {
             ids.add("textures");
         }
-        // The light loops of the Lambertian and Phong shaders (2017), or their BRDFs and the reflection
-        // shader's loop (2019), which run when the scene has a light.
+        // The light loops of the Lambertian and Phong shaders (2017), or the reflection shader's loop
+        // and the BRDFs it evaluates (2019: the Lambertian's and Phong's, or the microfacet ones), which
+        // run when the scene has a light.
         if (plan.runs(Effect.LIGHTING)) {
-            if (usesBrdfs(scene)) {
-                ids.add("brdfs");
-                ids.add("reflection");
-            } else {
+            Set<Class<?>> brdfs = new HashSet<>();
+            addBrdfsOf(scene.getSurfaces(), brdfs);
+            if (brdfs.isEmpty()) {
                 ids.add("lighting");
+            } else {
+                ids.add("reflection");
+            }
+            if (brdfs.contains(LambertianBrdf.class) || brdfs.contains(PhongBrdf.class)) {
+                ids.add("brdfs");
+            }
+            if (brdfs.contains(MicrofacetBrdf.class)) {
+                ids.add("microfacet");
             }
         }
         Set<StudentTask> tasks = new LinkedHashSet<>();
@@ -64,21 +76,24 @@ final class BasicChecks {
         return tasks;
     }
 
-    /** Whether the scene was loaded by the 2019 conventions, whose shaders evaluate BRDFs. */
-    private static boolean usesBrdfs(Scene scene) {
-        return shadedByABrdf(scene.getSurfaces());
+    /** The classes of the BRDFs that the 2019 shaders of {@code surface} and its parts evaluate (none under 2017). */
+    private static void addBrdfsOf(Surface surface, Set<Class<?>> brdfs) {
+        addBrdfsOf(surface.getShader(), brdfs);
+        for (Surface child : surface.children()) {
+            addBrdfsOf(child, brdfs);
+        }
     }
 
-    private static boolean shadedByABrdf(Surface surface) {
-        if (surface.getShader() instanceof ReflectionShader) {
-            return true;
+    /** A shader's BRDF, and those of the shaders it shades with (a glaze's substrate). */
+    private static void addBrdfsOf(Shader shader, Set<Class<?>> brdfs) {
+        if (shader instanceof BrdfShader) {
+            brdfs.add(((BrdfShader) shader).brdf().getClass());
         }
-        for (Surface child : surface.children()) {
-            if (shadedByABrdf(child)) {
-                return true;
+        if (shader != null) {
+            for (Shader part : shader.parts()) {
+                addBrdfsOf(part, brdfs);
             }
         }
-        return false;
     }
 
     private static void addTasksOf(Surface surface, Set<String> ids) {
