@@ -145,6 +145,56 @@ public class ShadingTasksVariantsTest {
         }
     }
 
+    /**
+     * The microfacet BRDFs, an extra-credit task (every test a bonus test): the textbook forms (tan²θ
+     * from 1 − cos²θ, G1 through tanθ, the product 4|n·l||n·v|) pass every test but the hard cases,
+     * where they divide by zero, as a textbook sphere misses only the sphere's; the Fresnel factor
+     * as the mean of the s- and p-polarised reflectances, with D through 1/exp and G1 in a helper,
+     * passes every test.
+     */
+    @Test
+    public void microfacetBrdfsWrittenAnyCorrectWayEarnEveryPoint() throws Exception {
+        Assignment.use(Assignment.preset("course-2019"));
+        try {
+            int number = Assignment.current().number("microfacet");
+            StringBuilder unfair = new StringBuilder();
+            for (String name : List.of("microfacet-textbook", "microfacet-polarised")) {
+                Variant variant = Variant.correct(name, number);
+                List<VariantGrading.Outcome> outcomes = VariantGrading.run(variant, (t, type) -> t == number, work);
+                summarize(variant, outcomes);
+                assertTrue(variant + " ran no graded test", outcomes.stream().anyMatch(o -> o.task == number));
+                outcomes.stream().filter(o -> !o.passed() && !(name.equals("microfacet-textbook") && hardCase(o)))
+                        .forEach(o -> unfair.append("\n  ").append(variant).append(": ").append(o));
+            }
+            assertTrue("correct microfacet BRDFs lost points:" + unfair, unfair.length() == 0);
+        } finally {
+            Assignment.use(Assignment.preset("course-2017"));
+        }
+    }
+
+    /** A test of the hard cases, which only a form that never divides by zero passes: the bonus class and the hidden hard cases. */
+    private static boolean hardCase(VariantGrading.Outcome outcome) {
+        return outcome.test.contains("HardCases");
+    }
+
+    /** a = α tanθ, Schlick's Fresnel, π in the denominator, one masking term, α squared twice: each fails tests of its (extra-credit) task. */
+    @Test
+    public void microfacetMistakesFailTestsOfTheirTask() throws Exception {
+        Assignment.use(Assignment.preset("course-2019"));
+        try {
+            int number = Assignment.current().number("microfacet");
+            for (String name : List.of("microfacet-a-inverted", "microfacet-schlick", "microfacet-pi-denominator", "microfacet-one-masking",
+                    "microfacet-alpha-squared-twice")) {
+                Variant wrong = Variant.wrong(name, number);
+                List<VariantGrading.Outcome> outcomes = VariantGrading.run(wrong, (t, type) -> t == number, work);
+                summarize(wrong, outcomes);
+                assertTrue(wrong + " must fail tests of its task", outcomes.stream().anyMatch(o -> !o.passed() && !hardCase(o)));
+            }
+        } finally {
+            Assignment.use(Assignment.preset("course-2017"));
+        }
+    }
+
     /** Each correct variant named earns every point of task {@code number} and passes every render test, its task's and the others'. */
     private static void assertEachEarnsEveryPoint(List<String> names, int number, String what) throws Exception {
         StringBuilder unfair = new StringBuilder();

@@ -6,11 +6,12 @@ import picocli.CommandLine;
 import picocli.CommandLine.Option;
 import ray.scene.SceneOptions;
 import ray.shading.Course;
+import ray.shading.MicrofacetFactor;
 
 /**
- * {@code --course} and {@code --scene-root}, mixed into every command that loads scenes (render,
- * trace, explore, accuracy): which course's conventions a scene renders by, and where its data
- * paths start.
+ * {@code --course}, {@code --scene-root} and {@code --microfacet-term}, mixed into every command
+ * that loads scenes (render, trace, explore, accuracy): which course's conventions a scene renders
+ * by, where its data paths start, and whether its microfacet shaders show one factor alone.
  */
 final class CourseOptions {
     @Option(names = "--course", paramLabel = "YEAR", description = "The course conventions to render by: 2017 or 2019"
@@ -22,7 +23,12 @@ final class CourseOptions {
             + " start from (default: the scene file's folder, or the nearest folder above it that has the file).")
     Path sceneRoot;
 
-    /** The options as the loader takes them; a bad --course or --scene-root is a usage error naming it. */
+    @Option(names = "--microfacet-term", paramLabel = "D|F|G", description = "Show one factor of every microfacet shader alone,"
+            + " as the course's debug images did: k_mf times D (the distribution of facet normals), F (the Fresnel factor) or G"
+            + " (G1(l)·G1(v)), lit as the BRDF would be, with no diffuse part.")
+    String microfacetTerm;
+
+    /** The options as the loader takes them; a bad --course, --scene-root or --microfacet-term is a usage error naming it. */
     SceneOptions sceneOptions(CommandLine cl) {
         Course chosen = null;
         if (course != null) {
@@ -35,6 +41,14 @@ final class CourseOptions {
         if (sceneRoot != null && !Files.isDirectory(sceneRoot)) {
             throw new CommandLine.ParameterException(cl, "--scene-root " + sceneRoot + " is not a folder");
         }
-        return SceneOptions.orAssignment(chosen, sceneRoot);
+        SceneOptions options = SceneOptions.orAssignment(chosen, sceneRoot);
+        if (microfacetTerm != null) {
+            try {
+                options = options.withMicrofacetFactor(MicrofacetFactor.of(microfacetTerm));
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.ParameterException(cl, "--microfacet-term must be D, F or G, got '" + microfacetTerm + "'");
+            }
+        }
+        return options;
     }
 }

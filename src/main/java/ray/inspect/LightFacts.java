@@ -12,8 +12,8 @@ import ray.shading.Shader;
  * One light's part of a direct-lighting shader's result at a hit, as numbers: l, r², n·l, the
  * shadow ray, the terms of the formula (Lambertian kd ⊙ I · max(0, n·l)/r², Phong's specular
  * ks ⊙ I · max(0, n·h)^p/r² with h = normalize(l + e); under 2019's conventions kd/π and the
- * specular term times max(0, n·l)), and what the shader itself adds for the
- * light. {@link LightReport} prints them for {@code ray1 trace}; {@link PixelStory} sends them to
+ * specular term times max(0, n·l); a microfacet BRDF's factors, {@link MicrofacetTerms}), and what
+ * the shader itself adds for the light. {@link LightReport} prints them for {@code ray1 trace}; {@link PixelStory} sends them to
  * {@code ray1 explore}'s page.
  */
 final class LightFacts {
@@ -35,11 +35,13 @@ final class LightFacts {
     final Vec3 specular;
     final Vec3 ks;
     final Double exponent;
+    /** The microfacet BRDF's factors and the facets' share, or null for a shader without that BRDF. */
+    final MicrofacetTerms microfacet;
     /** What the shader itself returns for this light alone, with its shadow: zero when the shadow ray is blocked. */
     final Vec3 adds;
 
     private LightFacts(Light light, Vec3 l, double r2, double nl, ShadowCheck shadow, Vec3 kd, Vec3 diffuse, Vec3 ks,
-            Double exponent, Vec3 h, Double nh, Vec3 specular, Vec3 adds) {
+            Double exponent, Vec3 h, Double nh, Vec3 specular, MicrofacetTerms microfacet, Vec3 adds) {
         this.light = light;
         this.l = l;
         this.r2 = r2;
@@ -52,6 +54,7 @@ final class LightFacts {
         this.h = h;
         this.nh = nh;
         this.specular = specular;
+        this.microfacet = microfacet;
         this.adds = adds;
     }
 
@@ -80,9 +83,13 @@ final class LightFacts {
             nh = hit.normal.dot(h);
             specular = ks.times(intensity).times(Math.pow(Math.max(0, nh), p) * (y2019 ? Math.max(0, nl) : 1) / r2);
         }
+        MicrofacetTerms microfacet = MicrofacetTerms.of(shader, hit.normal, l, ray.direction.normalized().negate(), intensity, r2);
+        if (microfacet != null) {
+            specular = microfacet.specular;
+        }
         boolean blocked = shadow != null && shadow.blockedByGroup;
         Vec3 adds = blocked ? Vec3.ZERO : shader.shade(hit, ray, recorded.onlyLight(light, false), 0);
-        return new LightFacts(light, l, r2, nl, shadow, kd, diffuse, ks, p, h, nh, specular, adds);
+        return new LightFacts(light, l, r2, nl, shadow, kd, diffuse, ks, p, h, nh, specular, microfacet, adds);
     }
 
     boolean blocked() {

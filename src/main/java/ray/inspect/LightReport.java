@@ -51,6 +51,9 @@ final class LightReport {
                     + (y2019 ? " · " + Fmt.num(Math.max(0, f.nl)) : "") + " / " + Fmt.num(f.r2) + " = "
                     + Fmt.vec(f.specular) + (y2019 ? "   (2019: weighted by n·l like the diffuse term)" : "   (not gated by n·l)")));
         }
+        if (f.microfacet != null) {
+            printMicrofacet(f.microfacet, intensity, f, in);
+        }
         if (f.agreesWithFormula() || !shader.evaluatesAt(hit, ray)) {
             out.println(Fmt.row(in, "adds", f.blocked() ? "nothing: the shadow ray is blocked" : Fmt.vec(f.adds)));
         } else {
@@ -58,5 +61,23 @@ final class LightReport {
                     + ": the shader's shade returns another value for this light"));
         }
         return f.adds;
+    }
+
+    /** The microfacet BRDF's factors, each as the shader's own classes compute it, and the facets' share. */
+    private void printMicrofacet(MicrofacetTerms m, Vec3 intensity, LightFacts f, String in) {
+        out.println(Fmt.row(in, "h", Fmt.vec(m.h) + "   (normalize(l + e), the half vector)"));
+        if (m.error != null) {
+            out.println(Fmt.row(in, "facets", "✗ " + m.error));
+            return;
+        }
+        out.println(Fmt.row(in, "F", Fmt.num(m.fresnel) + "   (Fresnel.reflectance(|l·h| = " + Fmt.num(m.lh) + "), nt = " + Fmt.num(m.nt) + ")"));
+        out.println(Fmt.row(in, "D", Fmt.num(m.distribution) + "   (" + m.distributionClass + ".normalDistribution(n, h), α = "
+                + Fmt.num(m.alpha) + ")"));
+        out.println(Fmt.row(in, "G1(l)", Fmt.num(m.maskingL) + "   (" + m.distributionClass + ".masking(l, n, h))"));
+        out.println(Fmt.row(in, "G1(v)", Fmt.num(m.maskingV) + "   (" + m.distributionClass + ".masking(e, n, h))"));
+        out.println(Fmt.row(in, "facets", "k_mf ⊙ I · F·D·G1(l)·G1(v) / (4 n·l n·v) · n·l / r² = " + Fmt.vec(f.ks) + " ⊙ "
+                + Fmt.vec(intensity) + " · " + Fmt.num(m.fresnel) + "·" + Fmt.num(m.distribution) + "·" + Fmt.num(m.maskingL) + "·"
+                + Fmt.num(m.maskingV) + " / (4 · " + Fmt.num(f.nl) + " · n·v) · " + Fmt.num(Math.max(0, f.nl)) + " / " + Fmt.num(f.r2)
+                + " = " + Fmt.vec(m.specular)));
     }
 }

@@ -266,6 +266,18 @@ public final class PixelStory {
         }
         l.add("diffuse", vec(f.diffuse));
         l.add("specular", vec(f.specular));
+        l.add("microfacet", JsonNull.INSTANCE);
+        if (f.microfacet != null) {
+            MicrofacetTerms m = f.microfacet;
+            JsonObject mf = new JsonObject();
+            mf.add("h", vec(m.h));
+            mf.add("fresnel", num(m.fresnel));
+            mf.add("distribution", num(m.distribution));
+            mf.add("maskingL", num(m.maskingL));
+            mf.add("maskingV", num(m.maskingV));
+            mf.add("error", m.error == null ? JsonNull.INSTANCE : new JsonPrimitive(m.error));
+            l.add("microfacet", mf);
+        }
         l.add("adds", vec(f.adds));
         // The formula's share beside the shader's own, for a light loop of the students' that differs.
         l.add("formula", vec(f.formula()));

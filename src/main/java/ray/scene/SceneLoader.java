@@ -15,6 +15,9 @@ import org.w3c.dom.Element;
 import org.w3c.dom.NamedNodeMap;
 import org.w3c.dom.Node;
 import ray.camera.Camera;
+import ray.shading.BrdfShader;
+import ray.shading.MicrofacetBrdfParameters;
+import ray.shading.MicrofacetFactorBrdf;
 import ray.shading.OnlyInCourse;
 import ray.shading.Shader;
 import ray.shading.Texture;
@@ -57,6 +60,8 @@ public final class SceneLoader {
     private final Map<String, Element> namedAt = new HashMap<>();
     /** Warnings of the completed objects, located, in the order they were completed. */
     private final List<String> warnings = new ArrayList<>();
+    /** How many microfacet shaders show one factor alone ({@link SceneOptions#microfacetFactor}). */
+    private int microfacetShaders;
 
     private SceneLoader(Path file, SceneOptions options) {
         this.file = file;
@@ -92,6 +97,10 @@ public final class SceneLoader {
             scene.complete(options.course);
         } catch (IllegalArgumentException e) {
             throw error(root, e.getMessage());
+        }
+        if (options.microfacetFactor != null && microfacetShaders == 0) {
+            throw error(root, "a view of the microfacet factor " + options.microfacetFactor.name()
+                    + " was asked for, and this scene has no microfacet shader (MicrofacetBeckmann, MicrofacetGGX or Microfacet)");
         }
         warnings.forEach(scene::warn);
         return scene;
@@ -516,12 +525,22 @@ public final class SceneLoader {
             }
             if (object instanceof Shader) {
                 ((Shader) object).complete();
-                return ((Shader) object).forCourse(options.course);
+                return showingFactor(((Shader) object).forCourse(options.course));
             }
             return object;
         } catch (IllegalArgumentException e) {
             throw error(element, "invalid " + object.getClass().getSimpleName() + ": " + e.getMessage());
         }
+    }
+
+    /** {@code shader}, whose microfacet BRDF shows the options' one factor alone when they ask for one. */
+    private Shader showingFactor(Shader shader) {
+        if (options.microfacetFactor != null && shader instanceof BrdfShader && ((BrdfShader) shader).brdf() instanceof MicrofacetBrdfParameters) {
+            BrdfShader brdfShader = (BrdfShader) shader;
+            brdfShader.setBrdf(new MicrofacetFactorBrdf((MicrofacetBrdfParameters) brdfShader.brdf(), options.microfacetFactor));
+            microfacetShaders++;
+        }
+        return shader;
     }
 
     private void checkAttributes(Element element, boolean objectElement) {

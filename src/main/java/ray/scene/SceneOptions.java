@@ -3,10 +3,11 @@ package ray.scene;
 import java.nio.file.Path;
 import ray.assignment.Assignment;
 import ray.shading.Course;
+import ray.shading.MicrofacetFactor;
 
 /**
- * How a scene file is read: the course conventions it renders by, and where its data paths (meshes,
- * texture images) start from.
+ * How a scene file is read: the course conventions it renders by, where its data paths (meshes,
+ * texture images) start from, and whether its microfacet shaders show one factor alone.
  *
  * <p>When no course is given, a scene shipped with ray1 renders by the conventions of its folder
  * ({@link #SCENES_2019} holds 2019's scenes, {@link #SCENES_2017} 2017's), so its render matches its
@@ -28,11 +29,23 @@ public final class SceneOptions {
      * file's folder and, for a file not there, from the nearest folder above it that has it.
      */
     public final Path sceneRoot;
+    /** The one factor every microfacet shader shows in place of its BRDF (the debug views), or null for the whole BRDF. */
+    public final MicrofacetFactor microfacetFactor;
 
-    private SceneOptions(Course course, boolean courseGiven, Path sceneRoot) {
+    private SceneOptions(Course course, boolean courseGiven, Path sceneRoot, MicrofacetFactor microfacetFactor) {
         this.course = course;
         this.courseGiven = courseGiven;
         this.sceneRoot = sceneRoot == null ? null : sceneRoot.toAbsolutePath().normalize();
+        this.microfacetFactor = microfacetFactor;
+    }
+
+    private SceneOptions(Course course, boolean courseGiven, Path sceneRoot) {
+        this(course, courseGiven, sceneRoot, null);
+    }
+
+    /** These options with every microfacet shader showing {@code factor} alone (null: the whole BRDF). */
+    public SceneOptions withMicrofacetFactor(MicrofacetFactor factor) {
+        return new SceneOptions(course, courseGiven, sceneRoot, factor);
     }
 
     public static SceneOptions of(Course course, Path sceneRoot) {
@@ -58,7 +71,7 @@ public final class SceneOptions {
             return this;
         }
         Course shipped = courseOfFolder(file);
-        return shipped == null || shipped == course ? this : new SceneOptions(shipped, false, sceneRoot);
+        return shipped == null || shipped == course ? this : new SceneOptions(shipped, false, sceneRoot, microfacetFactor);
     }
 
     /** The course of the nearest folder above {@code file} named {@link #SCENES_2017} or {@link #SCENES_2019}, or null. */

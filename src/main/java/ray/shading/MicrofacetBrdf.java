@@ -58,7 +58,7 @@ public class MicrofacetBrdf extends MicrofacetBrdfParameters {
         double f = fresnel().reflectance(Math.abs(l.dot(h)));
         double d = distribution().normalDistribution(n, h);
         // Each masking term over its own cosine: both stay finite as a direction grazes the surface,
-        // where the product of the two cosines alone could underflow to 0 (Walter et al. §5.1).
+        // where the product of the two cosines alone could underflow to 0.
         double g = distribution().masking(l, n, h) / nl * (distribution().masking(v, n, h) / nv);
         return rhoD.times(1 / Math.PI).plus(getMicrofacetColor().times(f * d * g / 4));
         // END SOLUTION

@@ -675,6 +675,12 @@ function lightBlock(light) {
       ['', light.shadowError ? el('span', { class: 'error' }, `! ${light.shadowError}`) : null],
       ['diffuse', light.diffuse ? fmtVec(light.diffuse) : '—'],
       ['specular', light.specular ? fmtVec(light.specular) : '—'],
+      // microfacet: the microfacet BRDF's factors as the shader's own classes compute them.
+      ...(light.microfacet ? [
+        ['F', light.microfacet.error ? el('span', { class: 'error' }, `! ${light.microfacet.error}`) : fmtNum(light.microfacet.fresnel)],
+        ['D', fmtNum(light.microfacet.distribution)],
+        ['G1(l), G1(v)', `${fmtNum(light.microfacet.maskingL)}, ${fmtNum(light.microfacet.maskingV)}`],
+      ] : []),
       ['adds', fmtVec(light.adds)],
       // agreesWithFormula false: the shader's own shade (a student's light loop) differs from the formula's share.
       ['', light.agreesWithFormula === false
