@@ -5,13 +5,18 @@ import ray.accuracy.Setting;
 import ray.accuracy.Sweep;
 import ray.accuracy.SweepProvider;
 import ray.render.RayOffsets;
+import ray.scene.Scene;
+import ray.shading.BrdfShader;
+import ray.shading.MicrofacetBrdfParameters;
 import ray.surface.Surface;
 
 /**
  * The accuracy report's sweeps whose code must not ship (found by ServiceLoader through
  * META-INF/services in src/instructorTest/resources): float vs double intersection
  * ({@link FloatSurfaces}; with offsets sized for float's ε, and with double's to show why they
- * must be) and the textbook sphere with Cramer's rule vs the robust tests ({@link TextbookSurfaces}). {@code gradle accuracyReport} runs with the test classpath, so it has them.
+ * must be), the textbook sphere with Cramer's rule vs the robust tests ({@link TextbookSurfaces}), and
+ * the microfacet BRDF's exact Fresnel factor and rational Beckmann masking term vs Schlick's
+ * approximation and the exact erf form ({@link MicrofacetApproximations}; scenes with a microfacet shader only). {@code gradle accuracyReport} runs with the test classpath, so it has them.
  */
 public final class InstructorSweeps implements SweepProvider {
     @Override
@@ -22,7 +27,32 @@ public final class InstructorSweeps implements SweepProvider {
                                 Setting.surfaces("float", FloatSurfaces::of).withOffsets("float", RayOffsets.SCALED_FOR_FLOAT),
                                 Setting.surfaces("float, double's offsets", FloatSurfaces::of)), true),
                 new Sweep("intersection", "What do the robust sphere and watertight triangle tests cost over the textbook ones, and what do they fix?",
-                        List.of(Setting.framework("robust"), Setting.surfaces("textbook", InstructorSweeps::textbook)), true));
+                        List.of(Setting.framework("robust"), Setting.surfaces("textbook", InstructorSweeps::textbook)), true),
+                new Sweep("fresnel", "What does Schlick's approximation of the Fresnel factor save over the exact one, and what does it change?",
+                        List.of(Setting.framework("Fresnel exact"), Setting.reloaded("Fresnel Schlick",
+                                options -> options.withBrdfs(b -> MicrofacetApproximations.of(b, MicrofacetApproximations.Change.SCHLICK_FRESNEL)))),
+                        true, InstructorSweeps::hasMicrofacetShader),
+                new Sweep("masking", "What does the course's rational fit of Beckmann's masking term save over the exact erf form, and what does it change?",
+                        List.of(Setting.framework("G1 rational"), Setting.reloaded("G1 erf",
+                                options -> options.withBrdfs(b -> MicrofacetApproximations.of(b, MicrofacetApproximations.Change.SMITH_MASKING)))),
+                        true, InstructorSweeps::hasMicrofacetShader));
+    }
+
+    /** Whether a surface of {@code scene} is shaded by a microfacet BRDF (the microfacet sweeps differ only there). */
+    static boolean hasMicrofacetShader(Scene scene) {
+        return hasMicrofacetShader(scene.getSurfaces());
+    }
+
+    private static boolean hasMicrofacetShader(Surface surface) {
+        if (surface.getShader() instanceof BrdfShader && ((BrdfShader) surface.getShader()).brdf() instanceof MicrofacetBrdfParameters) {
+            return true;
+        }
+        for (Surface child : surface.children()) {
+            if (hasMicrofacetShader(child)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Every sphere by the textbook quadratic and every triangle by Cramer's rule: a student's first answers. */

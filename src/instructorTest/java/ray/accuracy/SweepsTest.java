@@ -51,7 +51,7 @@ public class SweepsTest {
         List<String> expectedMissing = new ArrayList<>(Sweeps.ALL);
         expectedMissing.removeAll(names);
         assertEquals(expectedMissing, Sweeps.missing(sweeps));
-        assertEquals(List.of("arithmetic", "intersection"),
+        assertEquals(List.of("arithmetic", "intersection", "fresnel", "masking"),
                 Sweeps.missing(List.of(Sweeps.samples(List.of(1)), Sweeps.offsets(), Sweeps.depth(), Sweeps.acceleration())));
     }
 

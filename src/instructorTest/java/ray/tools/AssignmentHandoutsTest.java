@@ -147,8 +147,16 @@ public class AssignmentHandoutsTest {
      * formulas are today's text.
      */
     private static void checkHints(String file, String source, String shipped, ray.assignment.HintLevel level) {
-        List<String> todo = todoComment(shipped);
-        List<String> sourceTodo = todoComment(source);
+        List<List<String>> todos = todoComments(shipped);
+        List<List<String>> sourceTodos = todoComments(source);
+        assertEquals(file + "'s TODO comments", sourceTodos.size(), todos.size());
+        for (int k = 0; k < todos.size(); k++) {
+            checkHints(file, sourceTodos.get(k), todos.get(k), level);
+        }
+    }
+
+    /** One TODO comment (a file may hold several, one per method) at its level, against its source. */
+    private static void checkHints(String file, List<String> sourceTodo, List<String> todo, ray.assignment.HintLevel level) {
         int conventions = indexOfConventions(sourceTodo);
         assertTrue(file + "'s TODO has no conventions", conventions > 0);
         int hintsAt = sourceTodo.stream().filter(l -> l.startsWith("HINTS ")).findFirst().map(sourceTodo::indexOf).orElse(-1);
@@ -187,22 +195,23 @@ public class AssignmentHandoutsTest {
         return sourceTodo.subList(begin + 1, end);
     }
 
-    /** The TODO comment's lines, without the comment's slashes and indentation. */
-    private static List<String> todoComment(String text) {
-        List<String> lines = new java.util.ArrayList<>();
-        boolean in = false;
+    /** Each TODO comment's lines, without the comment's slashes and indentation, in file order. */
+    private static List<List<String>> todoComments(String text) {
+        List<List<String>> comments = new java.util.ArrayList<>();
+        List<String> lines = null;
         for (String line : text.split("\n")) {
             String t = line.strip();
             if (t.startsWith("// TODO(Task")) {
-                in = true;
+                lines = new java.util.ArrayList<>();
+                comments.add(lines);
             } else if (!t.startsWith("//") || t.equals(SolutionMarkers.BEGIN)) {
-                in = false;
+                lines = null;
             }
-            if (in) {
+            if (lines != null) {
                 lines.add(t.replaceFirst("^//\\s?", "").strip());
             }
         }
-        return lines;
+        return comments;
     }
 
     private static int indexOfConventions(List<String> todo) {

@@ -87,6 +87,7 @@ public final class AccuracyStudy {
         boolean mirrors = RenderPlan.of(scene).runs(Effect.REFLECTION);
         List<Sweep> sweeps = new ArrayList<>(available);
         sweeps.removeIf(s -> s.name.equals("depth") && !mirrors);
+        sweeps.removeIf(s -> !s.appliesTo(scene));
         PixelWindow part = window;
         if (part == null) {
             Image preview = render(RenderPlan.of(scene)).image;

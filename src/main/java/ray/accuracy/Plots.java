@@ -14,6 +14,8 @@ final class Plots {
         COLORS.put("samples", "#1f77b4");
         COLORS.put("arithmetic", "#d62728");
         COLORS.put("intersection", "#9467bd");
+        COLORS.put("fresnel", "#e377c2");
+        COLORS.put("masking", "#17becf");
         COLORS.put("offsets", "#2ca02c");
         COLORS.put("depth", "#8c564b");
         COLORS.put("acceleration", "#ff7f0e");

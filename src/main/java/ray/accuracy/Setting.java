@@ -6,6 +6,7 @@ import ray.render.RayOffsets;
 import ray.render.RenderPlan;
 import ray.render.SamplePattern;
 import ray.scene.Scene;
+import ray.scene.SceneOptions;
 import ray.surface.Surface;
 
 /**
@@ -26,6 +27,8 @@ public final class Setting {
     private final UnaryOperator<Surface> surfaces;
     /** The most hits along a path of mirror rays ({@link RenderPlan#withPathHits}), or the shaders' own cap. */
     private final int pathHits;
+    /** How the scene is loaded again for this setting (its BRDFs replaced), or null to render it as loaded. */
+    private UnaryOperator<SceneOptions> reload;
 
     private Setting(String label, int samples, SamplePattern pattern, RayOffsets offsets, UnaryOperator<Surface> surfaces) {
         this(label, samples, pattern, offsets, surfaces, Acceleration.BVH);
@@ -81,14 +84,26 @@ public final class Setting {
         return new Setting(label, 0, SamplePattern.GRID, RayOffsets.SCALED, surfaces);
     }
 
+    /**
+     * The scene's own samples, the scene loaded again with the options {@code reload} makes (BRDFs
+     * replaced by an approximation, say): a setting of the shading rather than of the rays.
+     */
+    public static Setting reloaded(String label, UnaryOperator<SceneOptions> reload) {
+        Setting setting = new Setting(label, 0, SamplePattern.GRID, RayOffsets.SCALED, null);
+        setting.reload = reload;
+        return setting;
+    }
+
     /** This setting with secondary rays started by {@code rule} instead, under another label. */
     public Setting withOffsets(String newLabel, RayOffsets rule) {
-        return new Setting(newLabel, samples, pattern, rule, surfaces, acceleration, pathHits);
+        Setting setting = new Setting(newLabel, samples, pattern, rule, surfaces, acceleration, pathHits);
+        setting.reload = reload;
+        return setting;
     }
 
     /** The plan that renders {@code scene} with this setting (the whole image). */
     public RenderPlan plan(Scene scene) {
-        Scene rendered = scene;
+        Scene rendered = reload != null ? scene.reload(reload) : scene;
         if (surfaces != null) {
             rendered = SceneCopy.withSurfaces(scene, surfaces.apply(scene.getSurfaces()));
         }

@@ -12,7 +12,8 @@ public final class Sweeps {
     /** The samples-per-pixel points of the study unless asked otherwise. */
     public static final List<Integer> SAMPLES = List.of(1, 4, 16, 64, 256);
     /** Every sweep the full study has, in report order. */
-    public static final List<String> ALL = List.of("samples", "arithmetic", "intersection", "offsets", "depth", "acceleration");
+    public static final List<String> ALL = List.of("samples", "arithmetic", "intersection", "fresnel", "masking", "offsets", "depth",
+            "acceleration");
     /** The deepest setting of the depth sweep, its baseline: the course's limit of 12 hits along a path. */
     static final int DEEPEST = 12;
     /** The seed of the jittered points (the reference uses another, so its noise is independent). */

@@ -43,7 +43,7 @@ final class LightReport {
                     + (y2019 ? "/π" : "") + " ⊙ " + Fmt.vec(intensity)
                     + " · " + Fmt.num(Math.max(0, f.nl)) + " / " + Fmt.num(f.r2) + " = " + Fmt.vec(f.diffuse)));
         }
-        if (f.specular != null) {
+        if (f.specular != null && f.microfacet == null) {
             out.println(Fmt.row(in, "h", Fmt.vec(f.h) + "   (normalize(l + e), the half vector)"));
             out.println(Fmt.row(in, "n·h", Fmt.num(f.nh)));
             out.println(Fmt.row(in, "specular", (y2019 ? "ks ⊙ I · max(0, n·h)^p · max(0, n·l) / r² = " : "ks ⊙ I · max(0, n·h)^p / r² = ")
@@ -77,7 +77,7 @@ final class LightReport {
         out.println(Fmt.row(in, "G1(v)", Fmt.num(m.maskingV) + "   (" + m.distributionClass + ".masking(e, n, h))"));
         out.println(Fmt.row(in, "facets", "k_mf ⊙ I · F·D·G1(l)·G1(v) / (4 n·l n·v) · n·l / r² = " + Fmt.vec(f.ks) + " ⊙ "
                 + Fmt.vec(intensity) + " · " + Fmt.num(m.fresnel) + "·" + Fmt.num(m.distribution) + "·" + Fmt.num(m.maskingL) + "·"
-                + Fmt.num(m.maskingV) + " / (4 · " + Fmt.num(f.nl) + " · n·v) · " + Fmt.num(Math.max(0, f.nl)) + " / " + Fmt.num(f.r2)
+                + Fmt.num(m.maskingV) + " / (4 · " + Fmt.num(f.nl) + " · " + Fmt.num(m.nv) + ") · " + Fmt.num(Math.max(0, f.nl)) + " / " + Fmt.num(f.r2)
                 + " = " + Fmt.vec(m.specular)));
     }
 }

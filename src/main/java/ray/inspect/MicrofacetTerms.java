@@ -17,6 +17,8 @@ final class MicrofacetTerms {
     final Vec3 h;
     /** |l·h|, the cosine F is evaluated at. */
     final double lh;
+    /** n·v, the eye's cosine in the denominator. */
+    final double nv;
     final double fresnel;
     final double distribution;
     final double maskingL;
@@ -29,10 +31,11 @@ final class MicrofacetTerms {
     final double alpha;
     final double nt;
 
-    private MicrofacetTerms(Vec3 h, double lh, double fresnel, double distribution, double maskingL, double maskingV, Vec3 specular,
+    private MicrofacetTerms(Vec3 h, double lh, double nv, double fresnel, double distribution, double maskingL, double maskingV, Vec3 specular,
             String error, String distributionClass, double alpha, double nt) {
         this.h = h;
         this.lh = lh;
+        this.nv = nv;
         this.fresnel = fresnel;
         this.distribution = distribution;
         this.maskingL = maskingL;
@@ -66,9 +69,9 @@ final class MicrofacetTerms {
             double gv = d.masking(e, n, h);
             Vec3 specular = !(nl > 0) || !(nv > 0) ? Vec3.ZERO
                     : brdf.getMicrofacetColor().times(intensity).times(f * dh * (gl / nl) * (gv / nv) / 4 * nl / r2);
-            return new MicrofacetTerms(h, lh, f, dh, gl, gv, specular, null, name, d.getAlpha(), brdf.fresnel().getNt());
+            return new MicrofacetTerms(h, lh, nv, f, dh, gl, gv, specular, null, name, d.getAlpha(), brdf.fresnel().getNt());
         } catch (RuntimeException | StackOverflowError t) { // the student's factors: shown, never the trace's end
-            return new MicrofacetTerms(h, lh, Double.NaN, Double.NaN, Double.NaN, Double.NaN, null, "a factor throws " + t, name,
+            return new MicrofacetTerms(h, lh, nv, Double.NaN, Double.NaN, Double.NaN, Double.NaN, null, "a factor throws " + t, name,
                     d.getAlpha(), brdf.fresnel().getNt());
         }
     }

@@ -1,8 +1,10 @@
 package ray.scene;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.function.UnaryOperator;
 import ray.IntersectionRecord;
 import ray.camera.Camera;
 import ray.math.Vec3;
@@ -21,6 +23,9 @@ import ray.surface.Surface;
 /** Everything a render needs: camera, image size, lights, surfaces and output settings. */
 public class Scene {
     private String name = "scene";
+    /** The file the scene was loaded from and how, for loading it again another way ({@link #reload}); null for a scene made in code. */
+    private Path file;
+    private SceneOptions options;
     private Camera camera;
     private int width;
     private int height;
@@ -148,6 +153,8 @@ public class Scene {
     public Scene withParts(Camera camera, List<Light> lights, List<Surface> surfaces) {
         Scene copy = new Scene();
         copy.setName(name);
+        copy.file = file;
+        copy.options = options;
         copy.setCamera(camera);
         copy.setImage(width, height);
         copy.setExposure(exposure);
@@ -200,6 +207,23 @@ public class Scene {
             }
         }
         return made;
+    }
+
+    /** Notes where the loader read the scene from, and how. */
+    void loadedFrom(Path file, SceneOptions options) {
+        this.file = file;
+        this.options = options;
+    }
+
+    /**
+     * The scene loaded again from its file with the options {@code change} makes of those it was
+     * loaded with (another course, BRDFs replaced): for comparing one scene rendered two ways.
+     */
+    public Scene reload(UnaryOperator<SceneOptions> change) {
+        if (file == null) {
+            throw new IllegalStateException("the scene " + name + " was not loaded from a file, so it cannot be loaded again");
+        }
+        return SceneLoader.load(file, change.apply(options));
     }
 
     public String getName() {

@@ -89,6 +89,7 @@ public final class SceneLoader {
         checkAttributes(root, false);
         Scene scene = new Scene();
         scene.setName(SceneFiles.nameOf(file));
+        scene.loadedFrom(file, options);
         setProperties(scene, null, root);
         if (!otherCourse.isEmpty()) {
             throw error(otherCourse.get(0), otherCourseProblem());
@@ -533,8 +534,14 @@ public final class SceneLoader {
         }
     }
 
-    /** {@code shader}, whose microfacet BRDF shows the options' one factor alone when they ask for one. */
+    /**
+     * {@code shader}, whose BRDF the options replace when they ask to ({@link SceneOptions#brdfs}), and
+     * whose microfacet BRDF shows the options' one factor alone when they ask for one.
+     */
     private Shader showingFactor(Shader shader) {
+        if (options.brdfs != null && shader instanceof BrdfShader) {
+            ((BrdfShader) shader).setBrdf(options.brdfs.apply(((BrdfShader) shader).brdf()));
+        }
         if (options.microfacetFactor != null && shader instanceof BrdfShader && ((BrdfShader) shader).brdf() instanceof MicrofacetBrdfParameters) {
             BrdfShader brdfShader = (BrdfShader) shader;
             brdfShader.setBrdf(new MicrofacetFactorBrdf((MicrofacetBrdfParameters) brdfShader.brdf(), options.microfacetFactor));

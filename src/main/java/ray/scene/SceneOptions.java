@@ -1,7 +1,9 @@
 package ray.scene;
 
 import java.nio.file.Path;
+import java.util.function.UnaryOperator;
 import ray.assignment.Assignment;
+import ray.shading.Brdf;
 import ray.shading.Course;
 import ray.shading.MicrofacetFactor;
 
@@ -31,21 +33,32 @@ public final class SceneOptions {
     public final Path sceneRoot;
     /** The one factor every microfacet shader shows in place of its BRDF (the debug views), or null for the whole BRDF. */
     public final MicrofacetFactor microfacetFactor;
+    /**
+     * What every 2019 shader's BRDF is replaced by, given the BRDF the scene made (an approximation
+     * whose cost the accuracy study measures), or null to keep them.
+     */
+    public final UnaryOperator<Brdf> brdfs;
 
-    private SceneOptions(Course course, boolean courseGiven, Path sceneRoot, MicrofacetFactor microfacetFactor) {
+    private SceneOptions(Course course, boolean courseGiven, Path sceneRoot, MicrofacetFactor microfacetFactor, UnaryOperator<Brdf> brdfs) {
         this.course = course;
         this.courseGiven = courseGiven;
         this.sceneRoot = sceneRoot == null ? null : sceneRoot.toAbsolutePath().normalize();
         this.microfacetFactor = microfacetFactor;
+        this.brdfs = brdfs;
     }
 
     private SceneOptions(Course course, boolean courseGiven, Path sceneRoot) {
-        this(course, courseGiven, sceneRoot, null);
+        this(course, courseGiven, sceneRoot, null, null);
     }
 
     /** These options with every microfacet shader showing {@code factor} alone (null: the whole BRDF). */
     public SceneOptions withMicrofacetFactor(MicrofacetFactor factor) {
-        return new SceneOptions(course, courseGiven, sceneRoot, factor);
+        return new SceneOptions(course, courseGiven, sceneRoot, factor, brdfs);
+    }
+
+    /** These options with every 2019 shader's BRDF replaced by what {@code replace} makes of it (null: kept). */
+    public SceneOptions withBrdfs(UnaryOperator<Brdf> replace) {
+        return new SceneOptions(course, courseGiven, sceneRoot, microfacetFactor, replace);
     }
 
     public static SceneOptions of(Course course, Path sceneRoot) {
@@ -71,7 +84,7 @@ public final class SceneOptions {
             return this;
         }
         Course shipped = courseOfFolder(file);
-        return shipped == null || shipped == course ? this : new SceneOptions(shipped, false, sceneRoot, microfacetFactor);
+        return shipped == null || shipped == course ? this : new SceneOptions(shipped, false, sceneRoot, microfacetFactor, brdfs);
     }
 
     /** The course of the nearest folder above {@code file} named {@link #SCENES_2017} or {@link #SCENES_2019}, or null. */
