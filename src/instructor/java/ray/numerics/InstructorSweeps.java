@@ -6,8 +6,6 @@ import ray.accuracy.Sweep;
 import ray.accuracy.SweepProvider;
 import ray.render.RayOffsets;
 import ray.scene.Scene;
-import ray.shading.BrdfShader;
-import ray.shading.MicrofacetBrdfParameters;
 import ray.surface.Surface;
 
 /**
@@ -31,28 +29,11 @@ public final class InstructorSweeps implements SweepProvider {
                 new Sweep("fresnel", "What does Schlick's approximation of the Fresnel factor save over the exact one, and what does it change?",
                         List.of(Setting.framework("Fresnel exact"), Setting.reloaded("Fresnel Schlick",
                                 options -> options.withBrdfs(b -> MicrofacetApproximations.of(b, MicrofacetApproximations.Change.SCHLICK_FRESNEL)))),
-                        true, InstructorSweeps::hasMicrofacetShader),
+                        true, Scene::hasMicrofacetShader),
                 new Sweep("masking", "What does the course's rational fit of Beckmann's masking term save over the exact erf form, and what does it change?",
                         List.of(Setting.framework("G1 rational"), Setting.reloaded("G1 erf",
                                 options -> options.withBrdfs(b -> MicrofacetApproximations.of(b, MicrofacetApproximations.Change.SMITH_MASKING)))),
-                        true, InstructorSweeps::hasMicrofacetShader));
-    }
-
-    /** Whether a surface of {@code scene} is shaded by a microfacet BRDF (the microfacet sweeps differ only there). */
-    static boolean hasMicrofacetShader(Scene scene) {
-        return hasMicrofacetShader(scene.getSurfaces());
-    }
-
-    private static boolean hasMicrofacetShader(Surface surface) {
-        if (surface.getShader() instanceof BrdfShader && ((BrdfShader) surface.getShader()).brdf() instanceof MicrofacetBrdfParameters) {
-            return true;
-        }
-        for (Surface child : surface.children()) {
-            if (hasMicrofacetShader(child)) {
-                return true;
-            }
-        }
-        return false;
+                        true, Scene::hasMicrofacetShader));
     }
 
     /** Every sphere by the textbook quadratic and every triangle by Cramer's rule: a student's first answers. */

@@ -19,6 +19,7 @@ import ray.scene.SceneException;
 import ray.scene.SceneFiles;
 import ray.scene.SceneOptions;
 import ray.shading.Course;
+import ray.shading.MicrofacetFactor;
 
 /**
  * Renders the reference images: every scene under scenes/ (recursively, except scenes/reference
@@ -96,6 +97,16 @@ public final class References {
                 PngWriter.write(result.image, scene.getExposure(), png);
                 System.out.printf("%-24s %4dx%-4d %6.2f s  %s%n", entry.getKey(), scene.getWidth(), scene.getHeight(),
                         result.seconds, png);
+                if (scene.hasMicrofacetShader()) {
+                    // Each microfacet factor alone, for the render tests' report of a microfacet scene that differs.
+                    for (MicrofacetFactor factor : MicrofacetFactor.values()) {
+                        Scene alone = scene.reload(o -> o.withMicrofacetFactor(factor));
+                        Path view = MicrofacetFactor.referenceView(reference, entry.getKey(), factor);
+                        Files.createDirectories(view.getParent());
+                        PngWriter.write(new Renderer(alone, 0, 0).render().image, alone.getExposure(), view);
+                        System.out.printf("%-24s %s%n", "", view);
+                    }
+                }
             } catch (SceneException e) {
                 System.err.println("error: " + e.getMessage());
                 failures++;

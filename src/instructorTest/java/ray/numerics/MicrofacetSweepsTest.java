@@ -27,8 +27,8 @@ public class MicrofacetSweepsTest {
 
     @Test
     public void theSweepsMeasureOnlyScenesWithAMicrofacetShader() {
-        assertTrue(InstructorSweeps.hasMicrofacetShader(load("microfacet-spheres")));
-        assertFalse(InstructorSweeps.hasMicrofacetShader(load("one-sphere-lambertian")));
+        assertTrue(load("microfacet-spheres").hasMicrofacetShader());
+        assertFalse(load("one-sphere-lambertian").hasMicrofacetShader());
     }
 
     @Test

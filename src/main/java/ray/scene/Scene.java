@@ -8,9 +8,11 @@ import java.util.function.UnaryOperator;
 import ray.IntersectionRecord;
 import ray.camera.Camera;
 import ray.math.Vec3;
+import ray.shading.BrdfShader;
 import ray.shading.Course;
 import ray.shading.Lambertian;
 import ray.shading.Light;
+import ray.shading.MicrofacetBrdfParameters;
 import ray.shading.Shader;
 import ray.shading.Texture;
 import ray.shading.legacy.MicrofacetBrdfElement;
@@ -224,6 +226,23 @@ public class Scene {
             throw new IllegalStateException("the scene " + name + " was not loaded from a file, so it cannot be loaded again");
         }
         return SceneLoader.load(file, change.apply(options));
+    }
+
+    /** Whether a surface of the scene is shaded by a microfacet BRDF (a MicrofacetBeckmann, MicrofacetGGX or Microfacet shader). */
+    public boolean hasMicrofacetShader() {
+        return hasMicrofacetShader(surfaces);
+    }
+
+    private static boolean hasMicrofacetShader(Surface surface) {
+        if (surface.getShader() instanceof BrdfShader && ((BrdfShader) surface.getShader()).brdf() instanceof MicrofacetBrdfParameters) {
+            return true;
+        }
+        for (Surface child : surface.children()) {
+            if (hasMicrofacetShader(child)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     public String getName() {

@@ -526,7 +526,7 @@ public final class SceneLoader {
             }
             if (object instanceof Shader) {
                 ((Shader) object).complete();
-                return showingFactor(((Shader) object).forCourse(options.course));
+                return withBrdfAsAsked(((Shader) object).forCourse(options.course));
             }
             return object;
         } catch (IllegalArgumentException e) {
@@ -538,7 +538,7 @@ public final class SceneLoader {
      * {@code shader}, whose BRDF the options replace when they ask to ({@link SceneOptions#brdfs}), and
      * whose microfacet BRDF shows the options' one factor alone when they ask for one.
      */
-    private Shader showingFactor(Shader shader) {
+    private Shader withBrdfAsAsked(Shader shader) {
         if (options.brdfs != null && shader instanceof BrdfShader) {
             ((BrdfShader) shader).setBrdf(options.brdfs.apply(((BrdfShader) shader).brdf()));
         }

@@ -1,5 +1,6 @@
 package ray.shading;
 
+import java.nio.file.Path;
 import ray.math.Vec3;
 
 /**
@@ -30,6 +31,14 @@ public enum MicrofacetFactor {
             default:
                 return brdf.distribution().masking(l, n, h) * brdf.distribution().masking(v, n, h);
         }
+    }
+
+    /**
+     * Where the reference image of a scene's view of this factor is kept, beside the scene's own
+     * reference in {@code referenceFolder}: {@code factors/<scene>-<factor>.png}.
+     */
+    public static Path referenceView(Path referenceFolder, String scene, MicrofacetFactor factor) {
+        return referenceFolder.resolve("factors").resolve(scene + "-" + factor.name() + ".png");
     }
 
     /** "D", "d", "F", "G" as a command line gives it; an IllegalArgumentException naming the choices otherwise. */

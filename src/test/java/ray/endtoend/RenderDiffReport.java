@@ -76,8 +76,8 @@ final class RenderDiffReport {
      * differing pixels show) heads its entry, as it heads the failure message.
      */
     static String add(Class<?> testClass, String scene, Path sceneFile, StudentTask task, ImageDiff.Result result,
-            BufferedImage yours, BufferedImage reference, String findings) {
-        return build().addEntry(testClass, scene, sceneFile, task, result, yours, reference, findings);
+            BufferedImage yours, BufferedImage reference, String findings, List<MicrofacetFactorViews.View> factors) {
+        return build().addEntry(testClass, scene, sceneFile, task, result, yours, reference, findings, factors);
     }
 
     synchronized void clearEntries(Class<?> testClass) {
@@ -110,12 +110,19 @@ final class RenderDiffReport {
 
     /** Adds a failed scene to the report and returns the page's location, to name in the failure message. */
     synchronized String addEntry(Class<?> testClass, String scene, Path sceneFile, StudentTask task,
-            ImageDiff.Result result, BufferedImage yours, BufferedImage reference, String findings) {
+            ImageDiff.Result result, BufferedImage yours, BufferedImage reference, String findings, List<MicrofacetFactorViews.View> factors) {
         Path classFolder = folder.resolve(testClass.getSimpleName());
         try {
             Files.createDirectories(classFolder);
             PngWriter.write(yours, classFolder.resolve(scene + "-yours.png"));
             PngWriter.write(reference, classFolder.resolve(scene + "-reference.png"));
+            List<String> factorNames = new ArrayList<>();
+            for (MicrofacetFactorViews.View view : factors) {
+                String prefix = scene + "-" + view.factor().name();
+                PngWriter.write(view.yours(), classFolder.resolve(prefix + "-yours.png"));
+                PngWriter.write(view.reference(), classFolder.resolve(prefix + "-reference.png"));
+                factorNames.add(view.factor().name() + ":" + view.result().passed());
+            }
             if (result.sameSize()) {
                 PngWriter.write(result.heatMap(), classFolder.resolve(scene + "-diff.png"));
             }
@@ -129,6 +136,8 @@ final class RenderDiffReport {
             entry.setProperty("testClass", testClass.getName());
             entry.setProperty("summary", result.summary());
             entry.setProperty("heatMap", Boolean.toString(result.sameSize()));
+            // D:false,F:true,G:true: each microfacet factor's view, and whether it matches its reference.
+            entry.setProperty("factors", String.join(",", factorNames));
             try (Writer w = Files.newBufferedWriter(classFolder.resolve(scene + ".properties"), StandardCharsets.UTF_8)) {
                 entry.store(w, null);
             }
@@ -208,8 +217,21 @@ final class RenderDiffReport {
             if (Boolean.parseBoolean(entry.getProperty("heatMap"))) {
                 figure(html, classFolder + "/" + scene + "-diff.png", "Difference");
             }
+            html.append("</div>\n");
+            for (String factor : entry.getProperty("factors", "").split(",")) {
+                if (factor.isEmpty()) {
+                    continue;
+                }
+                String name = factor.substring(0, factor.indexOf(':'));
+                boolean matches = Boolean.parseBoolean(factor.substring(factor.indexOf(':') + 1));
+                html.append("<p>").append(escape(name)).append(" alone").append(matches ? " (matches)" : " <span class=\"fail\">(differs)</span>")
+                        .append(":</p>\n<div class=\"row\">\n");
+                figure(html, classFolder + "/" + scene + "-" + name + "-yours.png", "Yours");
+                figure(html, classFolder + "/" + scene + "-" + name + "-reference.png", "Reference");
+                html.append("</div>\n");
+            }
             String sceneFile = entry.getProperty("file", "scenes/" + scene + ".xml");
-            html.append("</div>\n<p>Render it yourself: <code>gradle run --args=\"render -o out ").append(escape(sceneFile))
+            html.append("<p>Render it yourself: <code>gradle run --args=\"render -o out ").append(escape(sceneFile))
                     .append("\"</code>, then compare: <code>gradle run --args=\"diff scenes/reference/").append(escape(scene))
                     .append(".png out/").append(escape(scene)).append(".png -o out/").append(escape(scene))
                     .append("-diff.png\"</code></p>\n</section>\n");

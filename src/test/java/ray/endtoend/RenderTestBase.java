@@ -89,8 +89,17 @@ public abstract class RenderTestBase {
         List<String> pixels = DifferingPixels.lines(result, rendered.kinds(), shown);
         String uses = usesLine(loaded);
         List<String> findings = new ArrayList<>(pixels);
+        // A microfacet scene: which of the BRDF's factors, each rendered alone, parts from the reference's.
+        List<MicrofacetFactorViews.View> factors = loaded.hasMicrofacetShader()
+                ? MicrofacetFactorViews.of(loaded, referenceFile.getParent(), scene) : List.of();
+        if (!factors.isEmpty()) {
+            findings.add(MicrofacetFactorViews.line(factors));
+            pixels = new ArrayList<>(pixels);
+            pixels.add(MicrofacetFactorViews.line(factors));
+        }
         findings.add(uses);
-        String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference, String.join("\n", findings));
+        String report = RenderDiffReport.add(getClass(), scene, file, task(), result, yours, reference, String.join("\n", findings),
+                factors);
         StringBuilder differs = new StringBuilder(shown + " does not look like " + referenceShown + ": " + result.summary() + ".");
         pixels.forEach(line -> differs.append("\n    ").append(line));
         String see = "\n    " + uses + "\n    See your image, the reference and where they differ in " + report;
