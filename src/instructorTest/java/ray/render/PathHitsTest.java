@@ -64,7 +64,7 @@ public class PathHitsTest {
         assertEquals("depth 12", depth.baseline().label);
         assertEquals(12, depth.settings.size());
         assertTrue(depth.hasBaseline);
-        assertEquals(List.of("samples", "arithmetic", "intersection", "offsets", "depth", "acceleration"), Sweeps.ALL);
+        assertEquals(List.of("samples", "arithmetic", "intersection", "fresnel", "masking", "offsets", "depth", "acceleration"), Sweeps.ALL);
     }
 
     private static double[] pixels(Image image) {
