@@ -24,7 +24,8 @@ public class MicrofacetCliTest {
     public void traceShowsEachFactorOfTheLight() {
         CliRun run = CliRun.of("trace", DEBUG, "120", "80");
         assertEquals(run.toString(), 0, run.status);
-        assertTrue(run.out, run.out.contains("Microfacet, kd = (0, 0, 0) (2019: f = ρd/π + k_mf·F·D·G1(l)·G1(v) / (4|n·l||n·v|))"));
+        assertTrue(run.out, run.out.contains("Microfacet, kd = (0, 0, 0) (2019: f = ρd/π + k_mf·F·D·G1(l)·G1(v) / (4|n·l||n·v|),"
+                + " Beckmann α = 0.7, nt = 2, k_mf = (0.2, 0.3, 0.8))"));
         for (String row : new String[] {"h   ", "F   ", "D   ", "G1(l)", "G1(v)", "facets"}) {
             assertTrue(row + " missing:\n" + run.out, run.out.contains("\n      " + row));
         }

@@ -56,8 +56,16 @@ public abstract class MicrofacetBrdfParameters implements Brdf {
         return fresnel;
     }
 
+    /** The formula with its numbers: "ρd/π + k_mf·F·D·G1(l)·G1(v) / (4|n·l||n·v|), Beckmann α = 0.7, nt = 2, k_mf = (0.2, 0.3, 0.8)". */
     @Override
     public String formula() {
-        return "ρd/π + k_mf·F·D·G1(l)·G1(v) / (4|n·l||n·v|)";
+        return "ρd/π + k_mf·F·D·G1(l)·G1(v) / (4|n·l||n·v|), " + distributionName + " α = " + number(alpha) + ", nt = " + number(nt)
+                + ", k_mf = " + microfacetColor.format(MicrofacetBrdfParameters::number);
+    }
+
+    /** A scene's number as it was written (the loader reads them as float): 0.7, 2. */
+    private static String number(double x) {
+        String s = String.valueOf((float) x);
+        return s.endsWith(".0") ? s.substring(0, s.length() - 2) : s;
     }
 }
