@@ -35,7 +35,7 @@ public class MicrofacetHardCasesBonusTest {
      * vanishes; 0, not 0/0) and GGX's is α²/(π (α² cos²θ + sin²θ)²) → α²/π = 0.25/π.
      */
     @Test
-    @Points(2)
+    @Points(value = 2, bonus = true)
     public void dWithHAHairAboveTheTangentPlane() {
         Vec3 almost = v(1, 0, 1e-200).normalized();
         check(new BeckmannDistribution(0.5).normalDistribution(UP, almost), 0, "Beckmann (α = 0.5).normalDistribution(n " + UP + ", h "
@@ -49,7 +49,7 @@ public class MicrofacetHardCasesBonusTest {
      * yet f is finite: each G1 over its own cosine stays about 3.535/(α sinθ) (Beckmann) or 2/α (GGX).
      */
     @Test
-    @Points(2)
+    @Points(value = 2, bonus = true)
     public void grazingLightAndEyeStayFinite() {
         Vec3 l = v(0.6, 0.8, 1e-170).normalized();
         Vec3 view = v(-0.8, 0.6, 1e-170).normalized();
