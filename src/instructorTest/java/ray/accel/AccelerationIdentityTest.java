@@ -23,7 +23,7 @@ import ray.scene.SceneLoader;
  * Same image, proven: every shipped scene rendered at its own size and samples with acceleration and
  * without gives byte-identical PNG files. Acceleration changes which triangles a ray is tested
  * against, in which order, and whether a shadow ray looks for any blocker or the closest; none of
- * that may change a pixel.
+ * that may change a pixel. The students' tree (the solution's, here) gives the same bytes too.
  */
 public class AccelerationIdentityTest {
     @Rule
@@ -42,6 +42,8 @@ public class AccelerationIdentityTest {
             RenderResult linear = new Renderer(plan.withAcceleration(Acceleration.NONE), 2).render();
             byte[] slow = png(linear, scene, name + "-none");
             assertArrayEquals(name + ": --accel bvh and --accel none differ", slow, fast);
+            byte[] students = png(new Renderer(plan.withAcceleration(Acceleration.STUDENT), 2).render(), scene, name + "-student");
+            assertArrayEquals(name + ": --accel student (the solution's tree) and --accel bvh differ", fast, students);
             accelerated += plan.runs(ray.shading.Effect.ACCELERATION) ? 1 : 0;
         }
         assertTrue("most shipped scenes have a mesh or box to accelerate: " + accelerated, accelerated >= 10);

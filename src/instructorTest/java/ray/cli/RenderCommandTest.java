@@ -56,7 +56,23 @@ public class RenderCommandTest {
         assertArrayEquals(Files.readAllBytes(output.resolve("floor.png")), Files.readAllBytes(linear.resolve("floor.png")));
         CliRun bad = CliRun.of("render", "--accel", "kd-tree", "-o", output.toString(), scene.toString());
         assertEquals(bad.toString(), 2, bad.status);
-        assertTrue(bad.err, bad.err.startsWith("--accel must be bvh or none, got 'kd-tree'\n"));
+        assertTrue(bad.err, bad.err.startsWith("--accel must be bvh (or framework), student or none, got 'kd-tree'\n"));
+    }
+
+    /** The students' tree (the solution's here) renders a mesh scene to the same bytes as the framework's, and says so in --stats. */
+    @Test
+    public void accelStudentSearchesMeshesWithTheStudentsTree() throws Exception {
+        Path scene = Path.of("scenes", "mesh-smooth.xml").toAbsolutePath();
+        Path framework = root.resolve("framework");
+        Path students = root.resolve("students");
+        Path stats = root.resolve("stats.json");
+        CliRun bvh = CliRun.of("render", "--accel", "framework", "-o", framework.toString(), scene.toString());
+        CliRun student = CliRun.of("render", "--accel", "student", "--stats", stats.toString(), "-o", students.toString(), scene.toString());
+        assertEquals(bvh.toString(), 0, bvh.status);
+        assertEquals(student.toString(), 0, student.status);
+        assertArrayEquals(Files.readAllBytes(framework.resolve("mesh-smooth.png")), Files.readAllBytes(students.resolve("mesh-smooth.png")));
+        String json = Files.readString(stats);
+        assertTrue(json, json.contains("\"acceleration\": \"student\""));
     }
 
     @Test

@@ -20,14 +20,13 @@ final class OptionChecks {
         }
     }
 
-    /** The value of {@code --accel}: {@code bvh} or {@code none}. */
+    /** The value of {@code --accel}: {@code bvh} (or {@code framework}), {@code student} or {@code none}. */
     static ray.accel.Acceleration acceleration(CommandLine cl, String option, String value) {
-        for (ray.accel.Acceleration mode : ray.accel.Acceleration.values()) {
-            if (mode.option().equals(value)) {
-                return mode;
-            }
+        ray.accel.Acceleration mode = ray.accel.Acceleration.named(value);
+        if (mode == null) {
+            throw new CommandLine.ParameterException(cl, option + " must be " + ray.accel.Acceleration.spellings() + ", got '" + value + "'");
         }
-        throw new CommandLine.ParameterException(cl, option + " must be bvh or none, got '" + value + "'");
+        return mode;
     }
 
     /** An optional samples-per-pixel count: between 1 and {@link Limits#MAX_SAMPLES}. */

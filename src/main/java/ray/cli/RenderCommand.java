@@ -62,10 +62,11 @@ public final class RenderCommand extends ManyScenesCommand {
     @Option(names = "--threads", paramLabel = "N", description = "Worker threads (default: one per core).")
     Integer threads;
 
-    @Option(names = "--accel", paramLabel = "bvh|none", defaultValue = "bvh", description = "How boxes, meshes and "
-            + "shadow rays are searched: bvh (a bounding volume hierarchy in each mesh and box, boxes around placed "
-            + "groups, shadow rays that stop at the first blocker) or none (plain linear loops). The image is the same; "
-            + "the time and the counts in --stats are not (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--accel", paramLabel = "bvh|student|none", defaultValue = "bvh", description = "How boxes, meshes and "
+            + "shadow rays are searched: bvh, also spelled framework (the framework's bounding volume hierarchy in each mesh "
+            + "and box, boxes around placed groups, shadow rays that stop at the first blocker), student (the same, with "
+            + "your BvhTree in each mesh and box) or none (plain linear loops). The image is the same; the time and the "
+            + "counts in --stats are not (default: ${DEFAULT-VALUE}).")
     String accel;
 
     @Option(names = "--camera-rays", description = "Instead of rendering, color each pixel by where its camera ray crosses "

@@ -140,7 +140,7 @@ public final class RenderPlan {
             running.put(Effect.REFLECTION, reflection());
         }
         running.remove(Effect.ACCELERATION);
-        if (acceleration == Acceleration.BVH && trees != null) {
+        if (acceleration.accelerated() && trees != null) {
             running.put(Effect.ACCELERATION, trees);
         }
     }

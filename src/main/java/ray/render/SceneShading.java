@@ -54,7 +54,7 @@ public class SceneShading implements ShadingContext {
         this.pathHits = pathHits;
         this.surfaces = surfaces;
         this.offsets = offsets;
-        this.anyHitShadows = acceleration == Acceleration.BVH;
+        this.anyHitShadows = acceleration.accelerated();
         tracer.use(surfaces, scene.getBackColor(), this::shade, scene.getCourse().maxRayDepth());
         tracer.complete();
     }

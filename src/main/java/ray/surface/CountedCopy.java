@@ -5,6 +5,7 @@ import ray.IntersectionRecord;
 import ray.Ray;
 import ray.accel.Acceleration;
 import ray.accel.SearchCounter;
+import ray.bvh.StudentBvh;
 import ray.math.Bounds;
 
 /**
@@ -59,19 +60,28 @@ abstract class CountedCopy<S extends Surface> extends Surface {
     /** A box or mesh, searched through its hierarchy or by the plain loop, counting both kinds of test. */
     static final class OfTriangles extends CountedCopy<TriangleSet> {
         private final boolean accelerated;
+        /** The students' tree, searched by this thread, under {@link Acceleration#STUDENT} (for a set with a tree). */
+        private final StudentBvh.Search studentSearch;
 
         OfTriangles(TriangleSet set, Acceleration acceleration, SearchCounter counter) {
             super(set, counter);
-            this.accelerated = acceleration == Acceleration.BVH;
+            this.accelerated = acceleration.accelerated();
+            this.studentSearch = acceleration == Acceleration.STUDENT && set.hasTree() ? set.studentTree().search() : null;
         }
 
         @Override
         public boolean intersect(IntersectionRecord out, Ray ray) {
+            if (studentSearch != null) {
+                return studentSearch.closestHit(out, ray, counter);
+            }
             return accelerated ? original.closestHit(out, ray, counter) : original.closestHitLinear(out, ray, counter);
         }
 
         @Override
         public boolean intersectsAny(Ray ray) {
+            if (studentSearch != null) {
+                return studentSearch.anyHit(ray, counter);
+            }
             return accelerated ? original.anyHit(ray, counter) : original.closestHitLinear(new IntersectionRecord(), ray, counter);
         }
     }

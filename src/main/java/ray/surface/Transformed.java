@@ -49,7 +49,7 @@ public final class Transformed extends Surface {
      */
     @Override
     public Surface searchCopy(Acceleration acceleration, SearchCounter counter) {
-        boolean accelerated = acceleration == Acceleration.BVH;
+        boolean accelerated = acceleration.accelerated();
         // While grading, a placement of the student's triangles may be searched where they run (AnswerRounds).
         return AnswerRounds.searched(this, accelerated, new Transformed(surface.searchCopy(acceleration, counter), toWorld, toLocal,
                 accelerated, counter));

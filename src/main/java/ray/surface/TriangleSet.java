@@ -11,6 +11,9 @@ import ray.accel.Acceleration;
 import ray.accel.Bvh;
 import ray.accel.BvhBuilder;
 import ray.accel.SearchCounter;
+import ray.bvh.BoundingBoxes;
+import ray.bvh.Box;
+import ray.bvh.StudentBvh;
 import ray.math.Affine;
 import ray.math.Bounds;
 import ray.shading.Effect;
@@ -31,6 +34,8 @@ public abstract class TriangleSet extends Surface {
     /** In file order; an array, since a mesh may have millions (4 bytes each, no list's slack). */
     private Triangle[] triangles = new Triangle[0];
     private Bvh bvh;
+    /** The students' tree over the triangles, built the first time a search asks for it. */
+    private StudentBvh studentTree;
 
     /**
      * Replaces the triangles (by complete(), once the properties are known) and builds their
@@ -40,6 +45,31 @@ public abstract class TriangleSet extends Surface {
     protected void setTriangles(List<Triangle> built) {
         triangles = built.toArray(new Triangle[0]);
         bvh = triangles.length == 0 ? null : BvhBuilder.build(triangles, hasTree());
+        studentTree = null;
+    }
+
+    /**
+     * The students' tree over the triangles ({@code --accel student}): each triangle's box from
+     * {@link BoundingBoxes#ofTriangle}, the tree from {@link ray.bvh.BvhTree#build}, built once and
+     * checked ({@link StudentBvh#build}).
+     *
+     * @throws IllegalStateException when the students' code gives no box or a broken tree, saying which
+     */
+    public synchronized StudentBvh studentTree() {
+        if (studentTree == null) {
+            BoundingBoxes boxes = new BoundingBoxes();
+            Box[] triangleBoxes = new Box[triangles.length];
+            for (int i = 0; i < triangles.length; i++) {
+                Triangle t = triangles[i];
+                triangleBoxes[i] = boxes.ofTriangle(t.getV0(), t.getV1(), t.getV2());
+                if (triangleBoxes[i] == null) {
+                    throw new IllegalStateException("BoundingBoxes.ofTriangle returned null for " + this + "'s " + partName(t, i)
+                            + " (" + t.getV0() + ", " + t.getV1() + ", " + t.getV2() + "); expected its box");
+                }
+            }
+            studentTree = StudentBvh.build(triangles, triangleBoxes);
+        }
+        return studentTree;
     }
 
     @Override
@@ -51,7 +81,7 @@ public abstract class TriangleSet extends Surface {
     @Override
     public Surface searchCopy(Acceleration acceleration, SearchCounter counter) {
         // While grading, a set of the student's triangles may be searched where the student's Triangle runs (AnswerRounds).
-        return AnswerRounds.searched(this, acceleration == Acceleration.BVH, new CountedCopy.OfTriangles(this, acceleration, counter));
+        return AnswerRounds.searched(this, acceleration.accelerated(), new CountedCopy.OfTriangles(this, acceleration, counter));
     }
 
     /** Drawn as one shape of triangles. */
