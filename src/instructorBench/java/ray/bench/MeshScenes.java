@@ -46,6 +46,28 @@ final class MeshScenes {
         }
     }
 
+    /**
+     * The cost-against-size series of the tree benchmark: the bumpy sphere at icosphere levels 1 to 6
+     * (80 to 81,920 triangles), each in a small scene ({@code width}×{@code height}, one sample) named
+     * {@code bumpy-<triangles>}; returns the scene files, smallest first.
+     */
+    static List<Path> writeSizeSeries(Path folder, int width, int height) {
+        try {
+            Files.createDirectories(folder.resolve("meshes"));
+            List<Path> scenes = new java.util.ArrayList<>();
+            for (int level = 1; level <= 6; level++) {
+                MeshData mesh = bumpy(level, 1.0, 0.04, 9);
+                String name = "bumpy-" + mesh.triangleCount();
+                writeMesh(folder.resolve("meshes/" + name + ".obj"), mesh);
+                write(folder.resolve(name + ".xml"), meshScene(name, width, height, 1));
+                scenes.add(folder.resolve(name + ".xml"));
+            }
+            return scenes;
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
     /** An icosphere whose radius is modulated by a product of sines: lumps that a BVH must follow. */
     private static MeshData bumpy(int subdivisions, double radius, double amplitude, double frequency) {
         MeshData sphere = Icosphere.of(subdivisions, Vec3.ZERO, 1);
