@@ -98,7 +98,7 @@ public class AssignmentTest {
     @Test
     public void eachMistakeInAnAssignmentFileIsOneLineNamingTheFileAndWhatWasExpected() {
         refused("tasks = sphere, spheres\n", Map.of(),
-                "assignment.properties: there is no task \"spheres\"; the tasks are camera-rays, ray-color, group, sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder");
+                "assignment.properties: there is no task \"spheres\"; the tasks are camera-rays, ray-color, group, sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder, bvh");
         refused("tasks = sphere, sphere\n", Map.of(), "assignment.properties: the task sphere is chosen twice");
         refused("tasks = sphere\nhint = goal\n", Map.of(),
                 "assignment.properties: unknown key \"hint\"; expected preset, tasks, extraCredit, hints, course, hints.ID or points.ID");
@@ -113,10 +113,10 @@ public class AssignmentTest {
         refused("tasks = cylinder\nextraCredit = cylinder\n", Map.of(),
                 "assignment.properties: every chosen task is extra credit; at least one must be required");
         refused("tasks =\n", Map.of(), "assignment.properties: no tasks; give `tasks = id, id, …` from camera-rays, ray-color, group,"
-                + " sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder");
+                + " sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder, bvh");
         refused("preset = intersections\n", Map.of("tasks", "sphere,bvh"),
                 "assignment.properties with tasks given: there is no task \"bvh\"; the tasks are camera-rays, ray-color, group, sphere,"
-                        + " lighting, brdfs, reflection, triangle, textures, microfacet, cylinder");
+                        + " lighting, brdfs, reflection, triangle, textures, microfacet, cylinder, bvh");
     }
 
     @Test
@@ -130,7 +130,7 @@ public class AssignmentTest {
         assertEquals(HintLevel.GOAL, read("preset = intersections\n", Map.of("hints", "goal")).hints("group"));
         refused("tasks = sphere\nhints = lots\n", Map.of(), "assignment.properties: hints = lots; expected goal, steps or formulas");
         refused("tasks = sphere\nhints.spheres = goal\n", Map.of(), "assignment.properties: hints.spheres names no task; the tasks are"
-                + " camera-rays, ray-color, group, sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder");
+                + " camera-rays, ray-color, group, sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder, bvh");
     }
 
     @Test
