@@ -32,9 +32,12 @@ import javax.tools.ToolProvider;
  */
 final class StandInSources {
     /** The student methods the judge can forward, by name and parameter count, and StudentCalls' method for each. */
-    static final Map<String, String> FORWARDS = Map.of("intersect/2", "intersect", "generateRay/2", "generateRay", "getTexColor/2", "texColor",
-            "shade/4", "shade", "shadeRay/2", "shadeRay", "value/4", "brdfValue", "normalDistribution/2", "normalDistribution",
-            "masking/3", "masking", "reflectance/1", "reflectance");
+    static final Map<String, String> FORWARDS = Map.ofEntries(Map.entry("intersect/2", "intersect"), Map.entry("generateRay/2", "generateRay"),
+            Map.entry("getTexColor/2", "texColor"), Map.entry("shade/4", "shade"), Map.entry("shadeRay/2", "shadeRay"),
+            Map.entry("value/4", "brdfValue"), Map.entry("normalDistribution/2", "normalDistribution"), Map.entry("masking/3", "masking"),
+            Map.entry("reflectance/1", "reflectance"), Map.entry("ofSphere/2", "ofSphere"), Map.entry("ofTriangle/3", "ofTriangle"),
+            Map.entry("hit/2", "boxHit"), Map.entry("build/2", "build"), Map.entry("closestHit/3", "closestHit"),
+            Map.entry("anyHit/2", "anyHit"));
 
     private StandInSources() {
     }

@@ -114,8 +114,8 @@ public class AssignmentTest {
                 "assignment.properties: every chosen task is extra credit; at least one must be required");
         refused("tasks =\n", Map.of(), "assignment.properties: no tasks; give `tasks = id, id, …` from camera-rays, ray-color, group,"
                 + " sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder, bvh");
-        refused("preset = intersections\n", Map.of("tasks", "sphere,bvh"),
-                "assignment.properties with tasks given: there is no task \"bvh\"; the tasks are camera-rays, ray-color, group, sphere,"
+        refused("preset = intersections\n", Map.of("tasks", "sphere,kdtree"),
+                "assignment.properties with tasks given: there is no task \"kdtree\"; the tasks are camera-rays, ray-color, group, sphere,"
                         + " lighting, brdfs, reflection, triangle, textures, microfacet, cylinder, bvh");
     }
 

@@ -90,7 +90,7 @@ public final class Assignment {
         return a;
     }
 
-    /** A ready-made assignment by name ("intersections", "course-2017", "course-2018", "course-2019"). */
+    /** A ready-made assignment by name ("intersections", "course-2017", "course-2018", "course-2019", "course-2019-part2"). */
     public static Assignment preset(String name) {
         return preset(name, Map.of());
     }
@@ -102,7 +102,7 @@ public final class Assignment {
 
     /** The names of the ready-made assignments. */
     public static List<String> presetNames() {
-        return List.of("intersections", "course-2017", "course-2018", "course-2019");
+        return List.of("intersections", "course-2017", "course-2018", "course-2019", "course-2019-part2");
     }
 
     /**

@@ -5,9 +5,11 @@ import java.util.Arrays;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
+import ray.bvh.BvhNode;
 import ray.grading.wire.FrameworkFields;
 import ray.grading.wire.Protocol;
 import ray.grading.wire.Refs;
+import ray.grading.wire.Trees;
 import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
@@ -32,6 +34,8 @@ final class JudgeObjects {
     private int nextHandle = 1;
     private final List<Object> byHandle = new ArrayList<>(List.of(new Object()));
     private final Map<Surface, Integer> judgeSurfaces = new IdentityHashMap<>();
+    /** The nodes of students' trees the worker has been sent ({@link Protocol#DEF_NODES}). */
+    private final Map<BvhNode, Integer> nodes = new IdentityHashMap<>();
     private final Map<Image, Integer> images = new IdentityHashMap<>();
     /** The judge's objects the worker builds again (placements, sets of triangles), named by REF_PLACED. */
     private final Map<Object, Boolean> builtAgain = new IdentityHashMap<>();
@@ -57,6 +61,7 @@ final class JudgeObjects {
         nextHandle = 1;
         byHandle.subList(1, byHandle.size()).clear();
         judgeSurfaces.clear();
+        nodes.clear();
         images.clear();
         builtAgain.clear();
     }
@@ -159,6 +164,50 @@ final class JudgeObjects {
             definitions.u8(Protocol.DEF_PLACED).i32(handle);
             appendRaw(definitions, definition);
             return handle;
+        }
+
+        /**
+         * A node of a students' tree, as the worker names it: the nodes under it that the worker lacks
+         * are sent first, children before parents, each with its box and its range or children.
+         */
+        int nodeHandle(BvhNode root) {
+            Integer known = nodes.get(root);
+            if (known != null) {
+                return known;
+            }
+            java.util.List<BvhNode> unsent = new java.util.ArrayList<>();
+            java.util.Deque<BvhNode> pending = new java.util.ArrayDeque<>();
+            java.util.Set<BvhNode> seen = java.util.Collections.newSetFromMap(new IdentityHashMap<>());
+            pending.push(root);
+            while (!pending.isEmpty()) {
+                BvhNode node = pending.pop();
+                if (nodes.containsKey(node) || !seen.add(node)) {
+                    continue;
+                }
+                unsent.add(node);
+                if (!node.isLeaf()) {
+                    pending.push(node.left);
+                    pending.push(node.right);
+                }
+            }
+            // Parents were listed before their children: send the list backwards, so each child is known first.
+            definitionCount++;
+            definitions.u8(Protocol.DEF_NODES).i32(unsent.size());
+            for (int k = unsent.size() - 1; k >= 0; k--) {
+                BvhNode node = unsent.get(k);
+                int handle = nextHandle++;
+                byHandle.add(node);
+                nodes.put(node, handle);
+                definitions.i32(handle);
+                Trees.writeBox(definitions, node.box);
+                definitions.bool(node.isLeaf());
+                if (node.isLeaf()) {
+                    definitions.i32(node.start).i32(node.end);
+                } else {
+                    definitions.i32(nodes.get(node.left)).i32(nodes.get(node.right));
+                }
+            }
+            return nodes.get(root);
         }
 
         /** A question's target: a stand-in's twin, or what the worker builds again (a set of its triangles, a placement of one). */
@@ -322,6 +371,15 @@ final class JudgeObjects {
             throw new WireError("the worker called back a judge surface it was never given");
         }
         return (Surface) o;
+    }
+
+    /** The tree stand-in a primitive callback names: one of the graded task's (a twin the worker holds). */
+    ray.bvh.TreeData readTree(int handle) {
+        Object o = byHandle(handle);
+        if (!StudentCalls.isRemote(o) || !(o instanceof ray.bvh.TreeData)) {
+            throw new WireError("the worker named a twin that is no tree");
+        }
+        return (ray.bvh.TreeData) o;
     }
 
     private Object byHandle(int handle) {

@@ -5,10 +5,15 @@ import java.util.Deque;
 import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.bvh.BoundingBoxes;
+import ray.bvh.Box;
+import ray.bvh.BvhNode;
+import ray.bvh.BvhTree;
 import ray.camera.Camera;
 import ray.grading.wire.Protocol;
 import ray.grading.wire.Records;
 import ray.grading.wire.ThrownData;
+import ray.grading.wire.Trees;
 import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.math.Vec3;
@@ -130,6 +135,103 @@ public final class StudentCalls {
         return (Double) valueCall(self, Protocol.OP_FRESNEL, body -> body.f64(cosine), WireIn::f64);
     }
 
+    /** The student's {@code ofSphere(center, radius)} on {@code self}'s twin: a box or null. */
+    public static Box ofSphere(BoundingBoxes self, Vec3 center, double radius) {
+        return (Box) valueCall(self, Protocol.OP_BOX_OF_SPHERE, body -> body.vec(center).f64(radius), Trees::readBox);
+    }
+
+    /** The student's {@code ofTriangle(a, b, c)} on {@code self}'s twin: a box or null. */
+    public static Box ofTriangle(BoundingBoxes self, Vec3 a, Vec3 b, Vec3 c) {
+        return (Box) valueCall(self, Protocol.OP_BOX_OF_TRIANGLE, body -> body.vec(a).vec(b).vec(c), Trees::readBox);
+    }
+
+    /** The student's slab test {@code hit(box, ray)} on {@code self}'s twin. */
+    public static boolean boxHit(BoundingBoxes self, Box box, Ray ray) {
+        return (Boolean) valueCall(self, Protocol.OP_BOX_HIT, body -> {
+            Trees.writeBox(body, box);
+            Records.writeRay(body, ray);
+        }, WireIn::bool);
+    }
+
+    /**
+     * The student's {@code build(start, end)} on {@code self}'s twin, whose state carries the boxes and
+     * the order: the tree it returned, rebuilt here from its table, with the stand-in's order set to the
+     * one the build left (so the framework's checks read both as the student's code left them).
+     */
+    public static BvhNode build(BvhTree self, int start, int end) {
+        Object[] built = (Object[]) valueCall(self, Protocol.OP_TREE_BUILD, body -> body.i32(start).i32(end), in -> {
+            int n = in.i32();
+            if (n < -1 || n > Protocol.MAX_ENTRIES) {
+                throw new WireError("an order of " + n + " places");
+            }
+            int[] order = n < 0 ? null : new int[n];
+            for (int k = 0; k < n; k++) {
+                order[k] = in.i32();
+            }
+            return new Object[] {order, Trees.readTree(in)};
+        });
+        Trees.setOrder(self, (int[]) built[0]);
+        return (BvhNode) built[1];
+    }
+
+    /**
+     * The student's {@code closestHit(node, out, ray)} on {@code self}'s twin: the nodes go as
+     * definitions, each primitive test comes back ({@link Worker#servePrimitive}), and the counts the
+     * worker's copy made are added to the stand-in's.
+     */
+    public static boolean closestHit(BvhTree self, BvhNode node, IntersectionRecord out, Ray ray) {
+        Worker worker = Worker.get();
+        IntersectionRecord changed = new IntersectionRecord();
+        Ray changedRay = ray.copy();
+        long[] counts = new long[2];
+        Outcome outcome = worker.call(m -> {
+            m.body.u8(Protocol.OP_TREE_CLOSEST);
+            m.target((StandIn) self);
+            m.body.i32(node == null ? 0 : m.nodeHandle(node));
+            Records.writeRay(m.body, ray);
+            Records.write(m.body, out, m);
+        }, in -> {
+            int status = in.u8();
+            if (status == Protocol.THREW) {
+                return Outcome.threw(ThrownData.read(in));
+            }
+            expect(status);
+            boolean hit = in.bool();
+            changed.set(out);
+            int mask = Records.readChanges(in, changed, worker.objects().reader());
+            int rayMask = Records.readRayChanges(in, changedRay);
+            counts[0] = in.i64();
+            counts[1] = in.i64();
+            return Outcome.intersected(hit, mask, rayMask);
+        });
+        outcome.rethrow(self);
+        Trees.addCounts(self, counts[0], counts[1]);
+        Records.apply(outcome.mask, changed, out);
+        if ((outcome.rayMask & Records.START) != 0) {
+            ray.start = changedRay.start;
+        }
+        if ((outcome.rayMask & Records.END) != 0) {
+            ray.end = changedRay.end;
+        }
+        return outcome.hit;
+    }
+
+    /** The student's {@code anyHit(node, ray)} on {@code self}'s twin, as {@link #closestHit} without a record. */
+    public static boolean anyHit(BvhTree self, BvhNode node, Ray ray) {
+        long[] counts = new long[2];
+        Boolean hit = (Boolean) valueCall(self, Protocol.OP_TREE_ANY, body -> { }, in -> {
+            boolean any = in.bool();
+            counts[0] = in.i64();
+            counts[1] = in.i64();
+            return any;
+        }, m -> {
+            m.body.i32(node == null ? 0 : m.nodeHandle(node));
+            Records.writeRay(m.body, ray);
+        });
+        Trees.addCounts(self, counts[0], counts[1]);
+        return hit;
+    }
+
     /** A call {@code op}(u, v) on {@code self}'s twin, asked at once: what it returned, read by {@code value}, or what it threw, rethrown. */
     private static Object uvCall(Object self, int op, double u, double v, java.util.function.Function<WireIn, Object> value) {
         return valueCall(self, op, body -> body.f64(u).f64(v), value);
@@ -141,10 +243,17 @@ public final class StudentCalls {
      */
     private static Object valueCall(Object self, int op, java.util.function.Consumer<ray.grading.wire.WireOut> arguments,
             java.util.function.Function<WireIn, Object> value) {
+        return valueCall(self, op, arguments, value, m -> { });
+    }
+
+    /** As above, with arguments that need the message's definitions too ({@code more}: a tree's nodes), written after the others. */
+    private static Object valueCall(Object self, int op, java.util.function.Consumer<ray.grading.wire.WireOut> arguments,
+            java.util.function.Function<WireIn, Object> value, java.util.function.Consumer<JudgeObjects.Message> more) {
         Outcome outcome = Worker.get().call(m -> {
             m.body.u8(op);
             m.target((StandIn) self);
             arguments.accept(m.body);
+            more.accept(m);
         }, in -> returnedOrThrew(in, value));
         outcome.rethrow(self);
         return outcome.value;

@@ -8,10 +8,12 @@ import java.util.function.Consumer;
 import java.util.function.Function;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.accel.Hittable;
 import ray.grading.wire.Frames;
 import ray.grading.wire.Protocol;
 import ray.grading.wire.Records;
 import ray.grading.wire.ThrownData;
+import ray.grading.wire.Trees;
 import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
@@ -225,6 +227,9 @@ final class Worker {
             case Protocol.CB_BRDF:
                 serveBrdf(in);
                 break;
+            case Protocol.CB_PRIMITIVE:
+                servePrimitive(in);
+                break;
             default:
                 throw new WireError("a callback of kind " + kind);
         }
@@ -358,6 +363,42 @@ final class Worker {
         reply.body.u8(Protocol.RETURNED).bool(hit);
         Records.writeChanges(reply.body, Records.changes(before, record), record, reply);
         Records.writeRayChanges(reply.body, Records.rayChanges(start, end, ray), ray);
+        process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+    }
+
+    /**
+     * Tests the primitive of a students' tree that the worker's copy of the tree asked about (the
+     * stand-in's own primitive, by its place in the scene's order) and sends back the answer: any
+     * hit, or the closest with what it changed of the record and the ray.
+     */
+    void servePrimitive(WireIn in) {
+        Hittable primitive = Trees.primitive(objects.readTree(in.i32()), in.i32());
+        boolean any = in.bool();
+        Ray ray = Records.readRay(in);
+        IntersectionRecord record = new IntersectionRecord();
+        if (!any) {
+            Records.read(in, record, objects.reader());
+        }
+        in.end();
+        IntersectionRecord before = new IntersectionRecord();
+        before.set(record);
+        double start = ray.start;
+        double end = ray.end;
+        boolean hit;
+        try {
+            hit = any ? primitive.intersectsAny(ray) : primitive.intersect(record, ray);
+        } catch (WorkerFailure e) {
+            throw e;
+        } catch (Throwable t) { // a judge-side primitive's exception goes back through the student's code
+            sendThrown(t);
+            return;
+        }
+        JudgeObjects.Message reply = objects.new Message();
+        reply.body.u8(Protocol.RETURNED).bool(hit);
+        if (!any) {
+            Records.writeChanges(reply.body, Records.changes(before, record), record, reply);
+            Records.writeRayChanges(reply.body, Records.rayChanges(start, end, ray), ray);
+        }
         process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
     }
 

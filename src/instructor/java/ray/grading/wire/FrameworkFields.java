@@ -7,6 +7,9 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import ray.accel.Hittable;
+import ray.bvh.BoundingBoxes;
+import ray.bvh.Box;
 import ray.image.Image;
 import ray.math.Vec3;
 import ray.render.HitShading;
@@ -57,7 +60,10 @@ public final class FrameworkFields {
                 if (Modifier.isStatic(f.getModifiers()) || f.isSynthetic() || (c == Surface.class && f.getName().equals("shader"))
                         || f.getType() == Texture.class || f.getType() == HitShading.class || f.getType() == Brdf.class
                         // a microfacet BRDF's D, G1 and F objects: each side makes its own from the fields' names and numbers
-                        || f.getType() == MicrofacetDistribution.class || f.getType() == Fresnel.class) {
+                        || f.getType() == MicrofacetDistribution.class || f.getType() == Fresnel.class
+                        // a tree's counts (each side counts its own searches; a search's answer carries the worker's)
+                        // and its box tests (the student's own class, which each side makes)
+                        || f.getType() == long.class || f.getType() == BoundingBoxes.class) {
                     continue;
                 }
                 check(f);
@@ -73,7 +79,7 @@ public final class FrameworkFields {
     private static void check(Field f) {
         Class<?> t = f.getType();
         if (t != double.class && t != int.class && t != boolean.class && t != Vec3.class && t != Image.class && t != List.class
-                && t != Surface.class && t != String.class) {
+                && t != Surface.class && t != String.class && t != int[].class && t != Box[].class && t != Hittable[].class) {
             throw new IllegalStateException("grading cannot send " + f.getDeclaringClass().getName() + "." + f.getName()
                     + " of type " + t.getName() + "; teach ray.grading.wire.FrameworkFields that type");
         }
@@ -98,6 +104,21 @@ public final class FrameworkFields {
                     refs.writeImage(out, (Image) f.get(object));
                 } else if (t == Surface.class) {
                     refs.writeSurface(out, (Surface) f.get(object));
+                } else if (t == int[].class) {
+                    int[] ints = (int[]) f.get(object);
+                    out.i32(ints.length);
+                    for (int value : ints) {
+                        out.i32(value);
+                    }
+                } else if (t == Box[].class) {
+                    Box[] boxes = (Box[]) f.get(object);
+                    out.i32(boxes.length);
+                    for (Box box : boxes) {
+                        Trees.writeBox(out, box);
+                    }
+                } else if (t == Hittable[].class) {
+                    // A tree's primitives stay on the judge's side: the worker's copy asks each back by its place.
+                    out.i32(((Hittable[]) f.get(object)).length);
                 } else {
                     List<?> list = (List<?>) f.get(object);
                     out.i32(list.size());
@@ -148,6 +169,20 @@ public final class FrameworkFields {
             } else if (t == Surface.class) {
                 int kind = in.u8();
                 values.add(new SurfaceName(kind, kind == Protocol.REF_NULL ? 0 : in.i32()));
+            } else if (t == int[].class) {
+                int[] ints = new int[in.count(Protocol.MAX_ENTRIES, f.getName())];
+                for (int k = 0; k < ints.length; k++) {
+                    ints[k] = in.i32();
+                }
+                values.add(ints);
+            } else if (t == Box[].class) {
+                Box[] boxes = new Box[in.count(Protocol.MAX_ENTRIES, f.getName())];
+                for (int k = 0; k < boxes.length; k++) {
+                    boxes[k] = Trees.readBox(in);
+                }
+                values.add(boxes);
+            } else if (t == Hittable[].class) {
+                values.add(new PrimitiveCount(in.count(Protocol.MAX_ENTRIES, f.getName())));
             } else {
                 int n = in.count(Protocol.MAX_PARTS, f.getName());
                 List<SurfaceName> parts = new ArrayList<>(n);
@@ -161,9 +196,22 @@ public final class FrameworkFields {
         return values;
     }
 
-    /** Sets {@code object}'s framework fields to {@code values} ({@link #readValues}), each named surface found by {@code find}. */
+    /** How many primitives a tree holds on the judge's side: the worker makes that many that ask back ({@link #apply}). */
+    public static final class PrimitiveCount {
+        public final int count;
+
+        PrimitiveCount(int count) {
+            this.count = count;
+        }
+    }
+
+    /**
+     * Sets {@code object}'s framework fields to {@code values} ({@link #readValues}), each named surface
+     * found by {@code find}, and a tree's primitives made by {@code primitives} from their count.
+     */
     @SuppressWarnings("unchecked")
-    public static void apply(Object object, List<Object> values, java.util.function.Function<SurfaceName, Surface> find) {
+    public static void apply(Object object, List<Object> values, java.util.function.Function<SurfaceName, Surface> find,
+            java.util.function.IntFunction<Hittable[]> primitives) {
         List<Field> fields = of(object.getClass());
         for (int k = 0; k < fields.size(); k++) {
             Field f = fields.get(k);
@@ -184,6 +232,8 @@ public final class FrameworkFields {
                     }
                 } else if (f.getType() == Surface.class) {
                     f.set(object, find.apply((SurfaceName) value));
+                } else if (f.getType() == Hittable[].class) {
+                    f.set(object, primitives.apply(((PrimitiveCount) value).count));
                 } else {
                     f.set(object, value);
                 }

@@ -28,7 +28,7 @@ public final class Protocol {
     public static final int EXITING = 14;
 
     /** The first bytes of READY's payload: both sides must be built from the same grading code. */
-    public static final String VERSION = "ray1-grading-wire-4";
+    public static final String VERSION = "ray1-grading-wire-5";
 
     // Definitions, sent ahead of the calls that use them.
     /** A twin: the student's class made by its no-argument constructor (handle, class name). */
@@ -54,6 +54,11 @@ public final class Protocol {
      * twin's handle in order.
      */
     public static final int DEF_TRIANGLES = 7;
+    /**
+     * Nodes of a students' tree ({@code ray.bvh.BvhNode}) that a call names: a count, then each node
+     * after its children: its handle, its box, whether a leaf, then its range or its children's handles.
+     */
+    public static final int DEF_NODES = 8;
 
     // How an object is named in a message.
     public static final int REF_NULL = 0;
@@ -95,6 +100,25 @@ public final class Protocol {
     public static final int OP_MICROFACET_G1 = 8;
     /** A Fresnel factor's reflectance: the cosine; the answer a number. */
     public static final int OP_FRESNEL = 9;
+    /** The box of a sphere (BoundingBoxes.ofSphere): center and radius; the answer a box or null. */
+    public static final int OP_BOX_OF_SPHERE = 10;
+    /** The box of a triangle (BoundingBoxes.ofTriangle): three corners; the answer a box or null. */
+    public static final int OP_BOX_OF_TRIANGLE = 11;
+    /** The slab test (BoundingBoxes.hit): a box or null, and the ray; the answer a boolean. */
+    public static final int OP_BOX_HIT = 12;
+    /**
+     * A tree's build (BvhTree.build): the twin (whose boxes and order are its state), start and end; the
+     * answer the order the build left and the tree it returned, as a table (children first).
+     */
+    public static final int OP_TREE_BUILD = 13;
+    /**
+     * A tree's closest-hit search (BvhTree.closestHit): the twin, a node (its handle, the nodes sent as
+     * {@link #DEF_NODES}), the ray and the record; the answer as an intersect's, then the boxes and
+     * primitives the search tested. Each primitive test comes back as {@link #CB_PRIMITIVE}.
+     */
+    public static final int OP_TREE_CLOSEST = 14;
+    /** A tree's any-hit search (BvhTree.anyHit): the twin, a node and the ray; the answer a boolean and the two counts. */
+    public static final int OP_TREE_ANY = 15;
 
     // What a callback asks (its first byte), worker to judge, during a call.
     /** A judge-side surface's intersect: its handle, the ray, the record. */
@@ -119,6 +143,12 @@ public final class Protocol {
      * answer a vector.
      */
     public static final int CB_BRDF = 5;
+    /**
+     * A test of a students' tree's primitive, which stays on the judge's side: the tree's twin, the
+     * primitive's place in the scene's order, whether any hit will do (then only the ray; the answer a
+     * boolean), else the ray and the record (the answer as {@link #CB_INTERSECT}'s).
+     */
+    public static final int CB_PRIMITIVE = 6;
 
     // Answers.
     public static final int RETURNED = 0;

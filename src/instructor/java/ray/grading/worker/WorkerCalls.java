@@ -4,10 +4,15 @@ import java.util.ArrayList;
 import java.util.List;
 import ray.IntersectionRecord;
 import ray.Ray;
+import ray.bvh.BoundingBoxes;
+import ray.bvh.Box;
+import ray.bvh.BvhNode;
+import ray.bvh.BvhTree;
 import ray.camera.Camera;
 import ray.grading.wire.Protocol;
 import ray.grading.wire.Records;
 import ray.grading.wire.ThrownData;
+import ray.grading.wire.Trees;
 import ray.grading.wire.WireError;
 import ray.grading.wire.WireIn;
 import ray.grading.wire.WireOut;
@@ -68,6 +73,18 @@ final class WorkerCalls {
                 case Protocol.OP_MICROFACET_G1:
                 case Protocol.OP_FRESNEL:
                     microfacetTerm(op, in, answer);
+                    break;
+                case Protocol.OP_BOX_OF_SPHERE:
+                case Protocol.OP_BOX_OF_TRIANGLE:
+                case Protocol.OP_BOX_HIT:
+                    boxCall(op, in, answer);
+                    break;
+                case Protocol.OP_TREE_BUILD:
+                    treeBuild(in, answer);
+                    break;
+                case Protocol.OP_TREE_CLOSEST:
+                case Protocol.OP_TREE_ANY:
+                    treeSearch(op, in, answer);
                     break;
                 default:
                     throw new WireError("a call of kind " + op);
@@ -250,6 +267,113 @@ final class WorkerCalls {
             }
         }
         answer.u8(Protocol.RETURNED).f64(value);
+    }
+
+    /** A box of the student's BoundingBoxes (of a sphere, of a triangle), or its slab test of a box. */
+    private void boxCall(int op, WireIn in, WireOut answer) {
+        int handle = target(in);
+        BoundingBoxes twin;
+        Object result;
+        if (op == Protocol.OP_BOX_OF_SPHERE) {
+            Vec3 center = in.vec();
+            double radius = in.f64();
+            in.end();
+            twin = objects.twin(handle, BoundingBoxes.class);
+            try {
+                result = twin.ofSphere(center, radius);
+            } catch (Throwable t) {
+                threw(answer, t);
+                return;
+            }
+        } else if (op == Protocol.OP_BOX_OF_TRIANGLE) {
+            Vec3 a = in.vec();
+            Vec3 b = in.vec();
+            Vec3 c = in.vec();
+            in.end();
+            twin = objects.twin(handle, BoundingBoxes.class);
+            try {
+                result = twin.ofTriangle(a, b, c);
+            } catch (Throwable t) {
+                threw(answer, t);
+                return;
+            }
+        } else {
+            Box box = Trees.readBox(in);
+            Ray ray = Records.readRay(in);
+            in.end();
+            twin = objects.twin(handle, BoundingBoxes.class);
+            try {
+                result = twin.hit(box, ray);
+            } catch (Throwable t) {
+                threw(answer, t);
+                return;
+            }
+        }
+        answer.u8(Protocol.RETURNED);
+        if (result instanceof Boolean) {
+            answer.bool((Boolean) result);
+        } else {
+            Trees.writeBox(answer, (Box) result);
+        }
+    }
+
+    /** The student's build over the twin's boxes: the order it left and the tree it returned. */
+    private void treeBuild(WireIn in, WireOut answer) {
+        int handle = target(in);
+        int start = in.i32();
+        int end = in.i32();
+        in.end();
+        BvhTree twin = objects.twin(handle, BvhTree.class);
+        WireOut tree = new WireOut();
+        int[] order;
+        try {
+            BvhNode root = twin.build(start, end);
+            order = Trees.order(twin);
+            // Written here, so that a tree with a cycle (made by reflection) is what the student's code threw.
+            Trees.writeTree(tree, root);
+        } catch (Throwable t) {
+            threw(answer, t);
+            return;
+        }
+        answer.u8(Protocol.RETURNED);
+        answer.i32(order == null ? -1 : order.length);
+        if (order != null) {
+            for (int value : order) {
+                answer.i32(value);
+            }
+        }
+        answer.raw(tree);
+    }
+
+    /** The student's closest-hit or any-hit search from a node the judge sent, with the counts it made. */
+    private void treeSearch(int op, WireIn in, WireOut answer) {
+        int handle = target(in);
+        BvhNode node = objects.node(in.i32());
+        Ray ray = Records.readRay(in);
+        IntersectionRecord out = new IntersectionRecord();
+        if (op == Protocol.OP_TREE_CLOSEST) {
+            Records.read(in, out, objects);
+        }
+        in.end();
+        BvhTree twin = objects.twin(handle, BvhTree.class);
+        twin.resetCounts();
+        IntersectionRecord before = new IntersectionRecord();
+        before.set(out);
+        double start = ray.start;
+        double end = ray.end;
+        boolean hit;
+        try {
+            hit = op == Protocol.OP_TREE_CLOSEST ? twin.closestHit(node, out, ray) : twin.anyHit(node, ray);
+        } catch (Throwable t) {
+            threw(answer, t);
+            return;
+        }
+        answer.u8(Protocol.RETURNED).bool(hit);
+        if (op == Protocol.OP_TREE_CLOSEST) {
+            Records.writeChanges(answer, Records.changes(before, out), out, objects);
+            Records.writeRayChanges(answer, Records.rayChanges(start, end, ray), ray);
+        }
+        answer.i64(twin.boxesTested()).i64(twin.primitivesTested());
     }
 
     /** What the student's code threw; a judge-side surface's exception, or a broken twin's, passes on as it was. */

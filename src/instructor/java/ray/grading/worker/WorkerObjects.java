@@ -39,6 +39,7 @@ final class WorkerObjects implements Refs {
     private final Map<Integer, Surface> placed = new HashMap<>();
     private final Map<Object, Integer> placedHandles = new IdentityHashMap<>();
     private final Map<Integer, Image> images = new HashMap<>();
+    private final Map<Integer, ray.bvh.BvhNode> nodes = new HashMap<>();
     /** What the definitions asked for and {@link #settle} has not yet done, in order. */
     private final List<Runnable> unsettled = new ArrayList<>();
     private final JudgeLink link;
@@ -67,7 +68,7 @@ final class WorkerObjects implements Refs {
                         Object twin = twins.get(handle);
                         if (twin != null) {
                             try {
-                                FrameworkFields.apply(twin, values, this::find);
+                                FrameworkFields.apply(twin, values, this::find, count -> JudgePrimitive.array(handle, count, link, this));
                             } catch (BrokenTwin b) {
                                 // It holds a broken twin: using it throws what that one's making threw.
                                 twins.remove(handle);
@@ -91,6 +92,9 @@ final class WorkerObjects implements Refs {
                 }
                 case Protocol.DEF_IMAGE:
                     defineImage(in);
+                    break;
+                case Protocol.DEF_NODES:
+                    defineNodes(in);
                     break;
                 case Protocol.DEF_TRIANGLES: {
                     int handle = in.i32();
@@ -140,6 +144,38 @@ final class WorkerObjects implements Refs {
                     throw new WireError("a definition of kind " + kind);
             }
         }
+    }
+
+    /** Nodes of a students' tree, each after its children (framework objects: no student code runs). */
+    private void defineNodes(WireIn in) {
+        int n = in.count(Protocol.MAX_ENTRIES, "tree nodes");
+        for (int k = 0; k < n; k++) {
+            int handle = in.i32();
+            ray.bvh.Box box = ray.grading.wire.Trees.readBox(in);
+            boolean leaf = in.bool();
+            int a = in.i32();
+            int b = in.i32();
+            if (nodes.containsKey(handle)) {
+                throw new WireError("node " + handle + " sent twice");
+            }
+            try {
+                nodes.put(handle, leaf ? ray.bvh.BvhNode.leaf(box, a, b) : ray.bvh.BvhNode.inner(box, node(a), node(b)));
+            } catch (IllegalArgumentException e) {
+                throw new WireError("a tree node that cannot be: " + e.getMessage());
+            }
+        }
+    }
+
+    /** A node of a students' tree the judge sent; handle 0 is null (the judge's code passed none). */
+    ray.bvh.BvhNode node(int handle) {
+        if (handle == 0) {
+            return null;
+        }
+        ray.bvh.BvhNode node = nodes.get(handle);
+        if (node == null) {
+            throw new WireError("a tree node " + handle + " never sent");
+        }
+        return node;
     }
 
     /** Loads (without initializing: no student code runs) a class the judge names, which must be a student class here. */
