@@ -103,7 +103,7 @@ public class AssignmentTest {
         refused("tasks = sphere\nhint = goal\n", Map.of(),
                 "assignment.properties: unknown key \"hint\"; expected preset, tasks, extraCredit, hints, course, hints.ID or points.ID");
         refused("preset = course-2042\n", Map.of(),
-                "assignment.properties: preset = course-2042 is no preset; the presets are intersections, course-2017, course-2018, course-2019");
+                "assignment.properties: preset = course-2042 is no preset; the presets are intersections, course-2017, course-2018, course-2019, course-2019-part2");
         refused("tasks = sphere\ncourse = 2018\n", Map.of(),
                 "assignment.properties: course = 2018; ray1 renders with the course's conventions of 2017, 2019");
         refused("tasks = sphere, lighting\ncourse = 2019\n", Map.of(), "assignment.properties: the task lighting is written by the course's"
@@ -174,7 +174,7 @@ public class AssignmentTest {
             Assignment.resolve(project, "nowhere.properties", Map.of());
             fail();
         } catch (AssignmentException e) {
-            assertEquals("-Passignment=nowhere.properties: no such preset or file; the presets are intersections, course-2017, course-2018, course-2019", e.getMessage());
+            assertEquals("-Passignment=nowhere.properties: no such preset or file; the presets are intersections, course-2017, course-2018, course-2019, course-2019-part2", e.getMessage());
         }
     }
 

@@ -102,12 +102,12 @@ public class AssignmentGradingTest {
         System.setErr(new java.io.PrintStream(err, true, StandardCharsets.UTF_8));
         try {
             status = new CommandLine(new Grader()).execute("--project", PROJECT.toString(), "--classpath", LIBRARIES, "--out", out.toString(),
-                    "--tasks", "sphere, bvh");
+                    "--tasks", "sphere, kdtree");
         } finally {
             System.setErr(before);
         }
         assertEquals(1, status);
         assertTrue(err.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8).contains(
-                "there is no task \"bvh\"; the tasks are camera-rays, ray-color, group, sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder"));
+                "there is no task \"kdtree\"; the tasks are camera-rays, ray-color, group, sphere, lighting, brdfs, reflection, triangle, textures, microfacet, cylinder, bvh"));
     }
 }

@@ -176,14 +176,15 @@ public final class StudentCalls {
 
     /**
      * The student's {@code closestHit(node, out, ray)} on {@code self}'s twin: the nodes go as
-     * definitions, each primitive test comes back ({@link Worker#servePrimitive}), and the counts the
-     * worker's copy made are added to the stand-in's.
+     * definitions, each primitive test comes back ({@link Worker#servePrimitive}, which counts it), and
+     * the box tests the worker's copy counted are added to the stand-in's: a test that judges the work
+     * a search did reads the primitive tests, which the worker cannot misreport.
      */
     public static boolean closestHit(BvhTree self, BvhNode node, IntersectionRecord out, Ray ray) {
         Worker worker = Worker.get();
         IntersectionRecord changed = new IntersectionRecord();
         Ray changedRay = ray.copy();
-        long[] counts = new long[2];
+        long[] boxes = new long[1];
         Outcome outcome = worker.call(m -> {
             m.body.u8(Protocol.OP_TREE_CLOSEST);
             m.target((StandIn) self);
@@ -200,12 +201,12 @@ public final class StudentCalls {
             changed.set(out);
             int mask = Records.readChanges(in, changed, worker.objects().reader());
             int rayMask = Records.readRayChanges(in, changedRay);
-            counts[0] = in.i64();
-            counts[1] = in.i64();
+            boxes[0] = in.i64();
             return Outcome.intersected(hit, mask, rayMask);
         });
         outcome.rethrow(self);
-        Trees.addCounts(self, counts[0], counts[1]);
+        // Box tests as the worker counted them (they run there); primitive tests the judge counted itself as it served them.
+        Trees.addCounts(self, boxes[0], 0);
         Records.apply(outcome.mask, changed, out);
         if ((outcome.rayMask & Records.START) != 0) {
             ray.start = changedRay.start;
@@ -218,17 +219,16 @@ public final class StudentCalls {
 
     /** The student's {@code anyHit(node, ray)} on {@code self}'s twin, as {@link #closestHit} without a record. */
     public static boolean anyHit(BvhTree self, BvhNode node, Ray ray) {
-        long[] counts = new long[2];
+        long[] boxes = new long[1];
         Boolean hit = (Boolean) valueCall(self, Protocol.OP_TREE_ANY, body -> { }, in -> {
             boolean any = in.bool();
-            counts[0] = in.i64();
-            counts[1] = in.i64();
+            boxes[0] = in.i64();
             return any;
         }, m -> {
             m.body.i32(node == null ? 0 : m.nodeHandle(node));
             Records.writeRay(m.body, ray);
         });
-        Trees.addCounts(self, counts[0], counts[1]);
+        Trees.addCounts(self, boxes[0], 0);
         return hit;
     }
 

@@ -372,7 +372,9 @@ final class Worker {
      * hit, or the closest with what it changed of the record and the ray.
      */
     void servePrimitive(WireIn in) {
-        Hittable primitive = Trees.primitive(objects.readTree(in.i32()), in.i32());
+        ray.bvh.TreeData tree = objects.readTree(in.i32());
+        Hittable primitive = Trees.primitive(tree, in.i32());
+        Trees.addCounts(tree, 0, 1);
         boolean any = in.bool();
         Ray ray = Records.readRay(in);
         IntersectionRecord record = new IntersectionRecord();

@@ -113,11 +113,11 @@ public final class Protocol {
     public static final int OP_TREE_BUILD = 13;
     /**
      * A tree's closest-hit search (BvhTree.closestHit): the twin, a node (its handle, the nodes sent as
-     * {@link #DEF_NODES}), the ray and the record; the answer as an intersect's, then the boxes and
-     * primitives the search tested. Each primitive test comes back as {@link #CB_PRIMITIVE}.
+     * {@link #DEF_NODES}), the ray and the record; the answer as an intersect's, then the boxes the
+     * search tested. Each primitive test comes back as {@link #CB_PRIMITIVE}, where the judge counts it.
      */
     public static final int OP_TREE_CLOSEST = 14;
-    /** A tree's any-hit search (BvhTree.anyHit): the twin, a node and the ray; the answer a boolean and the two counts. */
+    /** A tree's any-hit search (BvhTree.anyHit): the twin, a node and the ray; the answer a boolean and the boxes tested. */
     public static final int OP_TREE_ANY = 15;
 
     // What a callback asks (its first byte), worker to judge, during a call.

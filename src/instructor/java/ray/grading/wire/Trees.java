@@ -164,23 +164,7 @@ public final class Trees {
         }
     }
 
-    public static void setPrimitives(TreeData tree, Hittable[] primitives) {
-        try {
-            PRIMITIVES.set(tree, primitives);
-        } catch (IllegalAccessException e) {
-            throw new IllegalStateException(e);
-        }
-    }
-
-    public static long boxesTested(TreeData tree) {
-        return tree.boxesTested();
-    }
-
-    public static long primitivesTested(TreeData tree) {
-        return tree.primitivesTested();
-    }
-
-    /** Adds a search's counts (as the worker's copy counted them) to the tree's own. */
+    /** Adds to the tree's own counts: box tests as the worker's copy counted them, primitive tests as the judge served them. */
     public static void addCounts(TreeData tree, long boxes, long primitives) {
         try {
             BOXES_TESTED.setLong(tree, BOXES_TESTED.getLong(tree) + boxes);

