@@ -8,8 +8,9 @@ public class BoundingBoxes extends BoxGeometry {
 
     public Box ofSphere(Vec3 center, double radius) {
         // TODO(Task 12): return the smallest box that holds the sphere.
-        //   Every point of the sphere of this center and radius must be in the box, and the box should be
-        //   no bigger than it needs to be.
+        //   Conventions:
+        //   - Every point of the sphere of this center and radius is in the box, and the box is no bigger
+        //     than it needs to be.
         // HINTS steps
         //   1) The sphere reaches radius beyond its center along each axis, both ways.
         //   2) Make a box from those two corners.

@@ -17,7 +17,8 @@ public class BvhTree extends TreeData {
         //   Return its root: a leaf when there are few enough primitives, else an inner node whose two
         //   children are the subtrees over two parts of the range. You may rearrange order[start .. end).
         //   How to split is your choice (the midpoint of the longest axis, the median, the surface area
-        //   heuristic); the framework checks the tree you return:
+        //   heuristic).
+        //   Conventions (the framework checks the tree you return):
         //   - every primitive is in exactly one leaf (and order still holds each primitive once);
         //   - each node's box holds its children's boxes, or its own primitives' boxes;
         //   - a leaf holds at most LEAF_SIZE primitives, unless all of them have the same center.
@@ -68,10 +69,12 @@ public class BvhTree extends TreeData {
     public boolean closestHit(BvhNode node, IntersectionRecord out, Ray ray) {
         // TODO(Task 12): find the closest hit among the primitives under node.
         //   Return whether any primitive under node is hit for t in (ray.start, ray.end), with out holding
-        //   the closest hit; on a miss leave out exactly as it was. It must find the same hit the plain
-        //   loop over every primitive would (a tie in t may keep either), but test far fewer:
-        //   - skip a node whose box the ray misses (hitsBox), or enters only beyond the closest hit so far;
-        //   - visit the child nearer the ray's origin first, so its hits shorten the ray before the other.
+        //   the closest hit; on a miss leave out exactly as it was.
+        //   Conventions:
+        //   - It finds the same hit the plain loop over every primitive would (a tie in t may keep either),
+        //     but tests far fewer.
+        //   - Skip a node whose box the ray misses (hitsBox), or enters only beyond the closest hit so far;
+        //   - Visit the child nearer the ray's origin first, so its hits shorten the ray before the other.
         // HINTS steps
         //   1) If the ray misses the node's box, return false.
         //   2) In a leaf, test its primitives in turn (hitsPrimitive) against a copy of the ray, making the
@@ -113,8 +116,10 @@ public class BvhTree extends TreeData {
 
     public boolean anyHit(BvhNode node, Ray ray) {
         // TODO(Task 12): return whether any primitive under node is hit for t in (ray.start, ray.end).
-        //   A shadow ray asks only whether something is in the way, so stop at the first primitive that
-        //   is: no closest hit, and no test after the first hit.
+        //   A shadow ray asks only whether something is in the way.
+        //   Conventions:
+        //   - Stop at the first primitive that is in the way: no closest hit, and no test after the first
+        //     hit.
         // HINTS steps
         //   1) If the ray misses the node's box, return false.
         //   2) In a leaf, return true at the first primitive that blocks the ray (blocks).
