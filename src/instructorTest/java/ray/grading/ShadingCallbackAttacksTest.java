@@ -4,12 +4,9 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 import static org.junit.Assume.assumeTrue;
 
-import com.google.gson.Gson;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.attribute.PosixFilePermissions;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.UnaryOperator;
@@ -19,8 +16,6 @@ import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import ray.assignment.Assignment;
-import ray.tools.AutograderBundle;
-import ray.tools.KitInputs;
 
 /**
  * A submission that attacks the callbacks a student's shading may make of the judge (the course-2017
@@ -55,31 +50,14 @@ public class ShadingCallbackAttacksTest {
                 Sandbox.isRoot() && Sandbox.lookUp(Sandbox.USER).isPresent());
         before = Assignment.current();
         Assignment.use(Assignment.preset("course-2017"));
-        Path root = FOLDER.getRoot().toPath();
-        Files.setPosixFilePermissions(root, PosixFilePermissions.fromString("rwx------"));
-        Path bundle = root.resolve("ray1-gradescope.zip");
-        KitInputs kit = new KitInputs();
-        AutograderBundle.build(CHECKOUT, bundle, kit.classes, kit.libraries);
-        KitInputs.unpack(bundle, root.resolve("source"));
         Map<String, UnaryOperator<String>> attacks = Map.of(
                 "src/main/java/ray/shading/Phong.java", at(SHADE_BODY, "ForgedShadeHitProbe"),
                 "src/main/java/ray/shading/Lambertian.java", at(SHADE_BODY, "DeepMirrorProbe"),
                 "src/main/java/ray/render/RayTracer.java", at(SHADE_RAY_BODY, "ForgedHitProbe"));
-        Path submission = root.resolve("submission");
-        Files.createDirectories(submission);
-        for (String file : StudentFiles.in(CHECKOUT).keySet()) {
-            String source = attacks.getOrDefault(file, UnaryOperator.identity())
-                    .apply(Files.readString(CHECKOUT.resolve(file), StandardCharsets.UTF_8));
-            Files.writeString(submission.resolve(Path.of(file).getFileName().toString()), source, StandardCharsets.UTF_8);
-        }
-        Map<String, String> variables = new LinkedHashMap<>();
-        variables.put("AUTOGRADER_ROOT", root.toString());
-        long start = System.nanoTime();
-        assertEquals(0, KitInputs.runScript(root.resolve("source/run_autograder"), variables, root.resolve("run.log")));
-        seconds = (System.nanoTime() - start) / 1e9;
-        @SuppressWarnings("unchecked")
-        Map<String, Object> read = new Gson().fromJson(Files.readString(root.resolve("results/results.json"), StandardCharsets.UTF_8), Map.class);
-        results = read;
+        BundleGrade grade = BundleGrade.of(CHECKOUT, FOLDER.getRoot().toPath(),
+                (file, source) -> attacks.getOrDefault(file, UnaryOperator.identity()).apply(source));
+        results = grade.results;
+        seconds = grade.seconds;
     }
 
     @AfterClass

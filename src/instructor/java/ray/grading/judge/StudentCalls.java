@@ -66,15 +66,25 @@ public final class StudentCalls {
 
     /** The student's {@code intersect(out, ray)} on {@code self}'s twin, asked at once. */
     static boolean intersectNow(Surface self, IntersectionRecord out, Ray ray) {
-        Worker worker = Worker.get();
-        IntersectionRecord changed = new IntersectionRecord();
-        Ray changedRay = ray.copy();
-        Outcome outcome = worker.call(m -> {
+        return recordCall(self, out, ray, m -> {
             m.body.u8(Protocol.OP_INTERSECT);
             m.target((StandIn) self);
             Records.writeRay(m.body, ray);
             Records.write(m.body, out, m);
-        }, in -> {
+        }, in -> { });
+    }
+
+    /**
+     * A call on {@code self}'s twin, written by {@code write}, whose answer is an intersect's (whether it
+     * hit, then what it changed of the record and of the ray, then whatever {@code more} reads), asked
+     * at once; the changes are applied to {@code out} and {@code ray} once the answer was read whole.
+     */
+    private static boolean recordCall(Object self, IntersectionRecord out, Ray ray, java.util.function.Consumer<JudgeObjects.Message> write,
+            java.util.function.Consumer<WireIn> more) {
+        Worker worker = Worker.get();
+        IntersectionRecord changed = new IntersectionRecord();
+        Ray changedRay = ray.copy();
+        Outcome outcome = worker.call(write, in -> {
             int status = in.u8();
             if (status == Protocol.THREW) {
                 return Outcome.threw(ThrownData.read(in));
@@ -84,6 +94,7 @@ public final class StudentCalls {
             changed.set(out);
             int mask = Records.readChanges(in, changed, worker.objects().reader());
             int rayMask = Records.readRayChanges(in, changedRay);
+            more.accept(in);
             return Outcome.intersected(hit, mask, rayMask);
         });
         outcome.rethrow(self);
@@ -181,40 +192,17 @@ public final class StudentCalls {
      * a search did reads the primitive tests, which the worker cannot misreport.
      */
     public static boolean closestHit(BvhTree self, BvhNode node, IntersectionRecord out, Ray ray) {
-        Worker worker = Worker.get();
-        IntersectionRecord changed = new IntersectionRecord();
-        Ray changedRay = ray.copy();
         long[] boxes = new long[1];
-        Outcome outcome = worker.call(m -> {
+        boolean hit = recordCall(self, out, ray, m -> {
             m.body.u8(Protocol.OP_TREE_CLOSEST);
             m.target((StandIn) self);
             m.body.i32(node == null ? 0 : m.nodeHandle(node));
             Records.writeRay(m.body, ray);
             Records.write(m.body, out, m);
-        }, in -> {
-            int status = in.u8();
-            if (status == Protocol.THREW) {
-                return Outcome.threw(ThrownData.read(in));
-            }
-            expect(status);
-            boolean hit = in.bool();
-            changed.set(out);
-            int mask = Records.readChanges(in, changed, worker.objects().reader());
-            int rayMask = Records.readRayChanges(in, changedRay);
-            boxes[0] = in.i64();
-            return Outcome.intersected(hit, mask, rayMask);
-        });
-        outcome.rethrow(self);
+        }, in -> boxes[0] = in.i64());
         // Box tests as the worker counted them (they run there); primitive tests the judge counted itself as it served them.
         Trees.addCounts(self, boxes[0], 0);
-        Records.apply(outcome.mask, changed, out);
-        if ((outcome.rayMask & Records.START) != 0) {
-            ray.start = changedRay.start;
-        }
-        if ((outcome.rayMask & Records.END) != 0) {
-            ray.end = changedRay.end;
-        }
-        return outcome.hit;
+        return hit;
     }
 
     /** The student's {@code anyHit(node, ray)} on {@code self}'s twin, as {@link #closestHit} without a record. */

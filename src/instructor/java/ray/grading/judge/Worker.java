@@ -346,30 +346,13 @@ final class Worker {
         IntersectionRecord record = new IntersectionRecord();
         Records.read(in, record, objects.reader());
         in.end();
-        IntersectionRecord before = new IntersectionRecord();
-        before.set(record);
-        double start = ray.start;
-        double end = ray.end;
-        boolean hit;
-        try {
-            hit = target.intersect(record, ray);
-        } catch (WorkerFailure e) {
-            throw e;
-        } catch (Throwable t) { // a judge-side surface's exception goes back through the student's code
-            sendThrown(t);
-            return;
-        }
-        JudgeObjects.Message reply = objects.new Message();
-        reply.body.u8(Protocol.RETURNED).bool(hit);
-        Records.writeChanges(reply.body, Records.changes(before, record), record, reply);
-        Records.writeRayChanges(reply.body, Records.rayChanges(start, end, ray), ray);
-        process.send(Protocol.CALLBACK_ANSWER, reply.assembled());
+        replyToTest(() -> target.intersect(record, ray), record, ray, true);
     }
 
     /**
      * Tests the primitive of a students' tree that the worker's copy of the tree asked about (the
-     * stand-in's own primitive, by its place in the scene's order) and sends back the answer: any
-     * hit, or the closest with what it changed of the record and the ray.
+     * stand-in's own primitive, by its place in the scene's order), counts the test as the stand-in's,
+     * and sends back the answer: any hit, or the closest with what it changed of the record and the ray.
      */
     void servePrimitive(WireIn in) {
         ray.bvh.TreeData tree = objects.readTree(in.i32());
@@ -382,22 +365,31 @@ final class Worker {
             Records.read(in, record, objects.reader());
         }
         in.end();
+        replyToTest(() -> any ? primitive.intersectsAny(ray) : primitive.intersect(record, ray), record, ray, !any);
+    }
+
+    /**
+     * Runs a judge-side intersection test for the worker and answers with whether it hit and, with
+     * {@code changes}, what it changed of the record and the ray; what it throws goes back through the
+     * student's code.
+     */
+    private void replyToTest(java.util.function.BooleanSupplier test, IntersectionRecord record, Ray ray, boolean changes) {
         IntersectionRecord before = new IntersectionRecord();
         before.set(record);
         double start = ray.start;
         double end = ray.end;
         boolean hit;
         try {
-            hit = any ? primitive.intersectsAny(ray) : primitive.intersect(record, ray);
+            hit = test.getAsBoolean();
         } catch (WorkerFailure e) {
             throw e;
-        } catch (Throwable t) { // a judge-side primitive's exception goes back through the student's code
+        } catch (Throwable t) { // a judge-side surface's exception goes back through the student's code
             sendThrown(t);
             return;
         }
         JudgeObjects.Message reply = objects.new Message();
         reply.body.u8(Protocol.RETURNED).bool(hit);
-        if (!any) {
+        if (changes) {
             Records.writeChanges(reply.body, Records.changes(before, record), record, reply);
             Records.writeRayChanges(reply.body, Records.rayChanges(start, end, ray), ray);
         }
