@@ -36,6 +36,7 @@ final class StandInSources {
             Map.entry("getTexColor/2", "texColor"), Map.entry("shade/4", "shade"), Map.entry("shadeRay/2", "shadeRay"),
             Map.entry("value/4", "brdfValue"), Map.entry("normalDistribution/2", "normalDistribution"), Map.entry("masking/3", "masking"),
             Map.entry("reflectance/1", "reflectance"), Map.entry("ofSphere/2", "ofSphere"), Map.entry("ofTriangle/3", "ofTriangle"),
+            Map.entry("ofCylinder/3", "ofCylinder"),
             Map.entry("hit/2", "boxHit"), Map.entry("build/2", "build"), Map.entry("closestHit/3", "closestHit"),
             Map.entry("anyHit/2", "anyHit"));
 

@@ -249,5 +249,7 @@ public class RenderPlanTest {
         assertTrue(linear.skipped().contains("bvh"));
         assertEquals("switched back on, the plan is the scene's again", plan.describe(),
                 linear.withAcceleration(ray.accel.Acceleration.BVH).describe());
+        RenderPlan students = plan.withAcceleration(ray.accel.Acceleration.STUDENT);
+        assertEquals("bvh(1 mesh, 12 triangles, your BvhTree)", students.effects().get(students.effects().size() - 1));
     }
 }

@@ -46,6 +46,25 @@ public class BoundingBoxes extends BoxGeometry {
         // STUB: return null;
     }
 
+    public Box ofCylinder(Vec3 center, double radius, double height) {
+        // TODO(Task 12): return the smallest box that holds the capped cylinder (extra credit).
+        //   The cylinder stands on its bottom cap, centered at center, and rises along +y by height; its
+        //   side is radius from its axis.
+        //   Conventions:
+        //   - Both caps are in the box, and the box is no bigger than it needs to be.
+        // HINTS steps
+        //   1) Across the axis (x and z) it reaches radius to each side of the center.
+        //   2) Along the axis (y) it runs from the bottom cap up to the top.
+        // HINTS formulas
+        //   1) min = (cx − r, cy, cz − r), max = (cx + r, cy + height, cz + r).
+        // END HINTS
+        // BEGIN SOLUTION
+        return new Box(new Vec3(center.x - radius, center.y, center.z - radius),
+                new Vec3(center.x + radius, center.y + height, center.z + radius));
+        // END SOLUTION
+        // STUB: return null;
+    }
+
     public boolean hit(Box box, Ray ray) {
         // TODO(Task 12): return whether the ray passes through the box for some t in [ray.start, ray.end].
         //   The hierarchy skips everything inside a box this returns false for, so it must never return

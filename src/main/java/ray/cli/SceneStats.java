@@ -23,7 +23,7 @@ final class SceneStats {
     List<String> effects;
     List<String> skipped;
     Map<String, Long> rays;
-    /** "bvh" or "none": how the framework's searches ran. */
+    /** "bvh", "student" or "none": how the searches ran. */
     String acceleration;
     /** Ray–primitive intersection tests as counted, in all and per kind of ray. */
     long intersectionTests;

@@ -141,7 +141,7 @@ public final class RenderPlan {
         }
         running.remove(Effect.ACCELERATION);
         if (acceleration.accelerated() && trees != null) {
-            running.put(Effect.ACCELERATION, trees);
+            running.put(Effect.ACCELERATION, acceleration == Acceleration.STUDENT ? trees + ", your BvhTree" : trees);
         }
     }
 

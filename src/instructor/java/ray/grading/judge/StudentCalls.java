@@ -156,6 +156,11 @@ public final class StudentCalls {
         return (Box) valueCall(self, Protocol.OP_BOX_OF_TRIANGLE, body -> body.vec(a).vec(b).vec(c), Trees::readBox);
     }
 
+    /** The student's {@code ofCylinder(center, radius, height)} on {@code self}'s twin: a box or null. */
+    public static Box ofCylinder(BoundingBoxes self, Vec3 center, double radius, double height) {
+        return (Box) valueCall(self, Protocol.OP_BOX_OF_CYLINDER, body -> body.vec(center).f64(radius).f64(height), Trees::readBox);
+    }
+
     /** The student's slab test {@code hit(box, ray)} on {@code self}'s twin. */
     public static boolean boxHit(BoundingBoxes self, Box box, Ray ray) {
         return (Boolean) valueCall(self, Protocol.OP_BOX_HIT, body -> {

@@ -119,6 +119,8 @@ public final class Protocol {
     public static final int OP_TREE_CLOSEST = 14;
     /** A tree's any-hit search (BvhTree.anyHit): the twin, a node and the ray; the answer a boolean and the boxes tested. */
     public static final int OP_TREE_ANY = 15;
+    /** The box of a capped cylinder (BoundingBoxes.ofCylinder): center, radius and height; the answer a box or null. */
+    public static final int OP_BOX_OF_CYLINDER = 16;
 
     // What a callback asks (its first byte), worker to judge, during a call.
     /** A judge-side surface's intersect: its handle, the ray, the record. */

@@ -76,6 +76,7 @@ final class WorkerCalls {
                     break;
                 case Protocol.OP_BOX_OF_SPHERE:
                 case Protocol.OP_BOX_OF_TRIANGLE:
+                case Protocol.OP_BOX_OF_CYLINDER:
                 case Protocol.OP_BOX_HIT:
                     boxCall(op, in, answer);
                     break;
@@ -269,7 +270,7 @@ final class WorkerCalls {
         answer.u8(Protocol.RETURNED).f64(value);
     }
 
-    /** A box of the student's BoundingBoxes (of a sphere, of a triangle), or its slab test of a box. */
+    /** A box of the student's BoundingBoxes (of a sphere, a triangle or a cylinder), or its slab test of a box. */
     private void boxCall(int op, WireIn in, WireOut answer) {
         int handle = target(in);
         BoundingBoxes twin;
@@ -281,6 +282,18 @@ final class WorkerCalls {
             twin = objects.twin(handle, BoundingBoxes.class);
             try {
                 result = twin.ofSphere(center, radius);
+            } catch (Throwable t) {
+                threw(answer, t);
+                return;
+            }
+        } else if (op == Protocol.OP_BOX_OF_CYLINDER) {
+            Vec3 center = in.vec();
+            double radius = in.f64();
+            double height = in.f64();
+            in.end();
+            twin = objects.twin(handle, BoundingBoxes.class);
+            try {
+                result = twin.ofCylinder(center, radius, height);
             } catch (Throwable t) {
                 threw(answer, t);
                 return;

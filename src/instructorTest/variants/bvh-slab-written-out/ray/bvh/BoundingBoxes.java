@@ -19,6 +19,11 @@ public class BoundingBoxes extends BoxGeometry {
         return new Box(a, a).union(new Box(b, b)).union(new Box(c, c));
     }
 
+    public Box ofCylinder(Vec3 center, double radius, double height) {
+        Vec3 across = new Vec3(radius, 0, radius);
+        return new Box(center.minus(across), center.plus(across).plus(new Vec3(0, height, 0)));
+    }
+
     public boolean hit(Box box, Ray ray) {
         double tEnter = ray.start;
         double tLeave = ray.end;

@@ -17,6 +17,11 @@ public class BoundingBoxes extends BoxGeometry {
         return new Box(min, max);
     }
 
+    public Box ofCylinder(Vec3 center, double radius, double height) {
+        return new Box(new Vec3(center.x - radius, center.y, center.z - radius),
+                new Vec3(center.x + radius, center.y + height, center.z + radius));
+    }
+
     public boolean hit(Box box, Ray ray) {
         double near = ray.start;
         double far = ray.end;
