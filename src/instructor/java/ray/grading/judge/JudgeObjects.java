@@ -199,13 +199,7 @@ final class JudgeObjects {
                 byHandle.add(node);
                 nodes.put(node, handle);
                 definitions.i32(handle);
-                Trees.writeBox(definitions, node.box);
-                definitions.bool(node.isLeaf());
-                if (node.isLeaf()) {
-                    definitions.i32(node.start).i32(node.end);
-                } else {
-                    definitions.i32(nodes.get(node.left)).i32(nodes.get(node.right));
-                }
+                Trees.writeNode(definitions, node, nodes::get);
             }
             return nodes.get(root);
         }

@@ -61,7 +61,8 @@ public final class FrameworkFields {
                         || f.getType() == Texture.class || f.getType() == HitShading.class || f.getType() == Brdf.class
                         // a microfacet BRDF's D, G1 and F objects: each side makes its own from the fields' names and numbers
                         || f.getType() == MicrofacetDistribution.class || f.getType() == Fresnel.class
-                        // a tree's counts (each side counts its own searches; a search's answer carries the worker's)
+                        // a tree's counts (each side counts its own: the judge the primitive tests it serves, a search's
+                        // answer the box tests the worker made)
                         // and its box tests (the student's own class, which each side makes)
                         || f.getType() == long.class || f.getType() == BoundingBoxes.class) {
                     continue;

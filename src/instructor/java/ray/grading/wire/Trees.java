@@ -100,13 +100,37 @@ public final class Trees {
         }
         out.i32(table.size());
         for (BvhNode node : table) {
-            writeBox(out, node.box);
-            out.bool(node.isLeaf());
-            if (node.isLeaf()) {
-                out.i32(node.start).i32(node.end);
-            } else {
-                out.i32(rows.get(node.left)).i32(rows.get(node.right));
-            }
+            writeNode(out, node, rows::get);
+        }
+    }
+
+    /**
+     * One node as a row, the same in a tree's table and in a definition of nodes: its box, whether a
+     * leaf, then its range or its children as {@code child} names them (a row, a handle).
+     */
+    public static void writeNode(WireOut out, BvhNode node, java.util.function.ToIntFunction<BvhNode> child) {
+        writeBox(out, node.box);
+        out.bool(node.isLeaf());
+        if (node.isLeaf()) {
+            out.i32(node.start).i32(node.end);
+        } else {
+            out.i32(child.applyAsInt(node.left)).i32(child.applyAsInt(node.right));
+        }
+    }
+
+    /**
+     * Reads a row {@link #writeNode} wrote, its children found by {@code child} (which refuses a name it
+     * was never given); a node that cannot be (no box, an empty range) is a wire error.
+     */
+    public static BvhNode readNode(WireIn in, java.util.function.IntFunction<BvhNode> child) {
+        Box box = readBox(in);
+        boolean leaf = in.bool();
+        int a = in.i32();
+        int b = in.i32();
+        try {
+            return leaf ? BvhNode.leaf(box, a, b) : BvhNode.inner(box, child.apply(a), child.apply(b));
+        } catch (IllegalArgumentException e) {
+            throw new WireError("a tree node that cannot be: " + e.getMessage());
         }
     }
 
@@ -115,22 +139,13 @@ public final class Trees {
         int n = in.count(Protocol.MAX_ENTRIES, "tree nodes");
         BvhNode[] rows = new BvhNode[n];
         for (int k = 0; k < n; k++) {
-            Box box = readBox(in);
-            boolean leaf = in.bool();
-            int a = in.i32();
-            int b = in.i32();
-            try {
-                if (leaf) {
-                    rows[k] = BvhNode.leaf(box, a, b);
-                } else {
-                    if (a < 0 || a >= k || b < 0 || b >= k) {
-                        throw new WireError("a tree row " + k + " whose children are rows " + a + " and " + b);
-                    }
-                    rows[k] = BvhNode.inner(box, rows[a], rows[b]);
+            int row = k;
+            rows[k] = readNode(in, r -> {
+                if (r < 0 || r >= row) {
+                    throw new WireError("a tree row " + row + " whose child is row " + r);
                 }
-            } catch (IllegalArgumentException e) {
-                throw new WireError("a tree node that cannot be: " + e.getMessage());
-            }
+                return rows[r];
+            });
         }
         return n == 0 ? null : rows[n - 1];
     }

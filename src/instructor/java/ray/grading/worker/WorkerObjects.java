@@ -151,18 +151,10 @@ final class WorkerObjects implements Refs {
         int n = in.count(Protocol.MAX_ENTRIES, "tree nodes");
         for (int k = 0; k < n; k++) {
             int handle = in.i32();
-            ray.bvh.Box box = ray.grading.wire.Trees.readBox(in);
-            boolean leaf = in.bool();
-            int a = in.i32();
-            int b = in.i32();
             if (nodes.containsKey(handle)) {
                 throw new WireError("node " + handle + " sent twice");
             }
-            try {
-                nodes.put(handle, leaf ? ray.bvh.BvhNode.leaf(box, a, b) : ray.bvh.BvhNode.inner(box, node(a), node(b)));
-            } catch (IllegalArgumentException e) {
-                throw new WireError("a tree node that cannot be: " + e.getMessage());
-            }
+            nodes.put(handle, ray.grading.wire.Trees.readNode(in, this::node));
         }
     }
 
