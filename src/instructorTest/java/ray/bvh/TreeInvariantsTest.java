@@ -69,8 +69,6 @@ public class TreeInvariantsTest {
     @Test
     public void aSoundTreePasses() {
         assertNull(TreeInvariants.firstProblem(good(), tree, boxes));
-        assertEquals(2, TreeInvariants.depth(good()));
-        assertEquals(3, TreeInvariants.nodeCount(good()));
     }
 
     @Test
@@ -134,6 +132,5 @@ public class TreeInvariantsTest {
         assertEquals("primitive 1 has no box (null)", e.getMessage());
         StudentBvh built = StudentBvh.build(dots, new Box[] {at(0), at(1)});
         assertTrue(built.root().isLeaf());
-        assertEquals(1, built.depth());
     }
 }

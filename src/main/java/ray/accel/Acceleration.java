@@ -54,6 +54,10 @@ public enum Acceleration {
 
     /** Every spelling an option may take, for a usage message: "bvh (or framework), student or none". */
     public static String spellings() {
-        return "bvh (or framework), student or none";
+        java.util.List<String> each = new java.util.ArrayList<>();
+        for (Acceleration mode : values()) {
+            each.add(mode.option + (mode.otherSpellings.length == 0 ? "" : " (or " + String.join(", ", mode.otherSpellings) + ")"));
+        }
+        return String.join(", ", each.subList(0, each.size() - 1)) + " or " + each.get(each.size() - 1);
     }
 }

@@ -14,14 +14,10 @@ import ray.accel.SearchCounter;
 public final class StudentBvh {
     private final BvhTree built;
     private final BvhNode root;
-    private final int depth;
-    private final int nodes;
 
     private StudentBvh(BvhTree built, BvhNode root) {
         this.built = built;
         this.root = root;
-        this.depth = TreeInvariants.depth(root);
-        this.nodes = TreeInvariants.nodeCount(root);
     }
 
     /**
@@ -51,15 +47,6 @@ public final class StudentBvh {
 
     public BvhNode root() {
         return root;
-    }
-
-    /** Nodes on the longest path from the root to a leaf. */
-    public int depth() {
-        return depth;
-    }
-
-    public int nodeCount() {
-        return nodes;
     }
 
     /** A search of its own for one thread: the tree shared, the counts its own. */

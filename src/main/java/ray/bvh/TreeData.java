@@ -8,7 +8,7 @@ import ray.math.Vec3;
 /**
  * What the framework keeps of a students' hierarchy ({@link BvhTree}): the primitives, their boxes,
  * the order the tree puts them in, and the counts of what its searches test. The framework fills it
- * ({@link StudentTrees}); {@link BvhTree} builds the nodes over it and searches them.
+ * ({@link StudentBvh}); {@link BvhTree} builds the nodes over it and searches them.
  */
 public abstract class TreeData {
     /** A leaf holds at most this many primitives, unless all of them have the same center. */

@@ -96,41 +96,4 @@ public final class TreeInvariants {
         }
         return true;
     }
-
-    /** The number of nodes on the longest path from the root to a leaf (1 for a lone leaf). */
-    public static int depth(BvhNode root) {
-        int deepest = 0;
-        Deque<BvhNode> pending = new ArrayDeque<>();
-        Deque<Integer> depths = new ArrayDeque<>();
-        pending.push(root);
-        depths.push(1);
-        while (!pending.isEmpty()) {
-            BvhNode node = pending.pop();
-            int depth = depths.pop();
-            deepest = Math.max(deepest, depth);
-            if (!node.isLeaf()) {
-                pending.push(node.left);
-                depths.push(depth + 1);
-                pending.push(node.right);
-                depths.push(depth + 1);
-            }
-        }
-        return deepest;
-    }
-
-    /** How many nodes the tree has. */
-    public static int nodeCount(BvhNode root) {
-        int count = 0;
-        Deque<BvhNode> pending = new ArrayDeque<>();
-        pending.push(root);
-        while (!pending.isEmpty()) {
-            BvhNode node = pending.pop();
-            count++;
-            if (!node.isLeaf()) {
-                pending.push(node.left);
-                pending.push(node.right);
-            }
-        }
-        return count;
-    }
 }
