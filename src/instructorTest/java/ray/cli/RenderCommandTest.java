@@ -75,6 +75,26 @@ public class RenderCommandTest {
         assertTrue(json, json.contains("\"acceleration\": \"student\""));
     }
 
+    /** Where the assignment has students write the tree, their render searches with it unless told otherwise. */
+    @Test
+    public void theStudentsTreeIsTheDefaultWhereTheyWriteIt() throws Exception {
+        Path scene = Path.of("scenes", "two-boxes.xml").toAbsolutePath();
+        ray.assignment.Assignment before = ray.assignment.Assignment.current();
+        try {
+            for (String preset : new String[] {"course-2019-part2", "course-2017"}) {
+                ray.assignment.Assignment.use(ray.assignment.Assignment.preset(preset));
+                Path stats = root.resolve(preset + ".json");
+                CliRun run = CliRun.of("render", "--stats", stats.toString(), "-o", root.resolve(preset).toString(), scene.toString());
+                assertEquals(run.toString(), 0, run.status);
+                String mode = preset.equals("course-2017") ? "bvh" : "student";
+                String json = Files.readString(stats);
+                assertTrue(preset + ": " + json, json.contains("\"acceleration\": \"" + mode + "\""));
+            }
+        } finally {
+            ray.assignment.Assignment.use(before);
+        }
+    }
+
     @Test
     public void cameraRaysPaintWhereEachRayCrossesTheImagePlane() throws Exception {
         Path scene = CliRun.write(root.resolve("floor.xml"), CliRun.floorScene(""));

@@ -35,14 +35,34 @@ public class SceneUsesTest {
     }
 
     /**
+     * A box or mesh big enough for a tree uses the bvh task where students write the tree, since every
+     * render test then searches through theirs (a small box's 12 triangles are enough); where they do
+     * not, the framework's tree is never to blame.
+     */
+    @Test
+    public void meshesUseTheTreeTaskOnlyWhereItIsChosen() throws Exception {
+        ray.assignment.Assignment before = ray.assignment.Assignment.current();
+        try {
+            ray.assignment.Assignment.use(ray.assignment.Assignment.preset("course-2019-part2"));
+            assertEquals(Set.of(StudentTask.of("bvh")), BasicChecks.tasksOf(RenderScenes.load(RenderScenes.fileOf("two-boxes"))));
+            assertEquals(Set.of(), BasicChecks.tasksOf(RenderScenes.load(RenderScenes.fileOf("one-sphere"))));
+            ray.assignment.Assignment.use(ray.assignment.Assignment.preset("course-2017"));
+            assertEquals(Set.of(StudentTask.of("camera-rays"), StudentTask.of("ray-color"), StudentTask.of("group"), StudentTask.of("triangle"),
+                    StudentTask.of("lighting")), BasicChecks.tasksOf(RenderScenes.load(RenderScenes.fileOf("two-boxes"))));
+        } finally {
+            ray.assignment.Assignment.use(before);
+        }
+    }
+
+    /**
      * Every graded render's own task is among those its scene uses, under the course preset that
-     * chooses the task (course-2017 or course-2019, which together choose every task).
+     * chooses the task (course-2017, course-2019 and course-2019-part2 together choose every task).
      */
     @Test
     public void everyRendersOwnTaskIsAmongItsScenesTasks() throws Exception {
         ray.assignment.Assignment before = ray.assignment.Assignment.current();
         try {
-            for (String preset : List.of("course-2017", "course-2019")) {
+            for (String preset : List.of("course-2017", "course-2019", "course-2019-part2")) {
                 ray.assignment.Assignment.use(ray.assignment.Assignment.preset(preset));
                 for (Map.Entry<String, ray.assignment.Task> e : RenderScenes.tasksOfScenes().entrySet()) {
                     if (ray.assignment.Assignment.current().number(e.getValue().id()) == 0) {

@@ -42,6 +42,18 @@ public enum Acceleration {
         return this != NONE;
     }
 
+    /**
+     * The mode a render runs in unless told otherwise: the students' tree ({@link #STUDENT}) when the
+     * assignment has them write it (the task {@value #STUDENTS_TREE_TASK}), so that every render of
+     * theirs, and every render test, searches boxes and meshes with it; else the framework's ({@link #BVH}).
+     */
+    public static Acceleration ofAssignment() {
+        return ray.assignment.Assignment.current().isChosen(STUDENTS_TREE_TASK) ? STUDENT : BVH;
+    }
+
+    /** The task in which students write the tree {@link #STUDENT} searches with. */
+    public static final String STUDENTS_TREE_TASK = "bvh";
+
     /** The mode an option names ({@code framework} is {@code bvh}), or null. */
     public static Acceleration named(String value) {
         for (Acceleration mode : values()) {

@@ -24,7 +24,7 @@ public final class StudentBvh {
      * The students' tree over {@code primitives}, whose boxes are {@code boxes} (the same length, at
      * least one).
      *
-     * @throws IllegalStateException naming the first rule of {@link TreeInvariants} the tree breaks
+     * @throws BrokenTree naming the first rule of {@link TreeInvariants} the tree breaks
      */
     public static StudentBvh build(Hittable[] primitives, Box[] boxes) {
         if (primitives.length == 0) {
@@ -32,7 +32,7 @@ public final class StudentBvh {
         }
         for (int i = 0; i < boxes.length; i++) {
             if (boxes[i] == null) {
-                throw new IllegalStateException("primitive " + i + " has no box (null)");
+                throw new BrokenTree("primitive " + i + " has no box (null)");
             }
         }
         BvhTree tree = new BvhTree();
@@ -40,7 +40,7 @@ public final class StudentBvh {
         BvhNode root = tree.build(0, primitives.length);
         String problem = TreeInvariants.firstProblem(root, tree, boxes);
         if (problem != null) {
-            throw new IllegalStateException("BvhTree.build over " + primitives.length + " primitives: " + problem);
+            throw new BrokenTree("BvhTree.build over " + primitives.length + " primitives: " + problem);
         }
         return new StudentBvh(tree, root);
     }

@@ -62,11 +62,11 @@ public final class RenderCommand extends ManyScenesCommand {
     @Option(names = "--threads", paramLabel = "N", description = "Worker threads (default: one per core).")
     Integer threads;
 
-    @Option(names = "--accel", paramLabel = "bvh|student|none", defaultValue = "bvh", description = "How boxes, meshes and "
+    @Option(names = "--accel", paramLabel = "bvh|student|none", description = "How boxes, meshes and "
             + "shadow rays are searched: bvh, also spelled framework (the framework's bounding volume hierarchy in each mesh "
             + "and box, boxes around placed groups, shadow rays that stop at the first blocker), student (the same, with "
             + "your BvhTree in each mesh and box) or none (plain linear loops). The image is the same; the time and the "
-            + "counts in --stats are not (default: ${DEFAULT-VALUE}).")
+            + "counts in --stats are not (default: student when your assignment has you write the tree, else bvh).")
     String accel;
 
     @Option(names = "--camera-rays", description = "Instead of rendering, color each pixel by where its camera ray crosses "
@@ -83,7 +83,8 @@ public final class RenderCommand extends ManyScenesCommand {
     public Integer call() throws IOException {
         OptionChecks.samples(spec.commandLine(), "--samples", samples);
         OptionChecks.atLeastOne(spec.commandLine(), "--threads", threads);
-        ray.accel.Acceleration acceleration = OptionChecks.acceleration(spec.commandLine(), "--accel", accel);
+        ray.accel.Acceleration acceleration = accel == null ? ray.accel.Acceleration.ofAssignment()
+                : OptionChecks.acceleration(spec.commandLine(), "--accel", accel);
         SceneOptions sceneOptions = courseOptions.sceneOptions(spec.commandLine());
         PrintWriter out = out();
         PrintWriter err = err();

@@ -12,6 +12,7 @@ import ray.accel.Bvh;
 import ray.accel.BvhBuilder;
 import ray.accel.SearchCounter;
 import ray.bvh.BoundingBoxes;
+import ray.bvh.BrokenTree;
 import ray.bvh.Box;
 import ray.bvh.StudentBvh;
 import ray.math.Affine;
@@ -53,7 +54,7 @@ public abstract class TriangleSet extends Surface {
      * {@link BoundingBoxes#ofTriangle}, the tree from {@link ray.bvh.BvhTree#build}, built once and
      * checked ({@link StudentBvh#build}).
      *
-     * @throws IllegalStateException when the students' code gives no box or a broken tree, saying which
+     * @throws BrokenTree when the students' code gives no box or a broken tree, saying which
      */
     public synchronized StudentBvh studentTree() {
         if (studentTree == null) {
@@ -63,7 +64,7 @@ public abstract class TriangleSet extends Surface {
                 Triangle t = triangles[i];
                 triangleBoxes[i] = boxes.ofTriangle(t.getV0(), t.getV1(), t.getV2());
                 if (triangleBoxes[i] == null) {
-                    throw new IllegalStateException("BoundingBoxes.ofTriangle returned null for " + this + "'s " + partName(t, i)
+                    throw new BrokenTree("BoundingBoxes.ofTriangle returned null for " + this + "'s " + partName(t, i)
                             + " (" + t.getV0() + ", " + t.getV1() + ", " + t.getV2() + "); expected its box");
                 }
             }

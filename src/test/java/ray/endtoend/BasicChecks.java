@@ -3,6 +3,7 @@ package ray.endtoend;
 import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.Set;
+import ray.accel.Acceleration;
 import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
@@ -18,6 +19,7 @@ import ray.shading.PhongBrdf;
 import ray.shading.Shader;
 import ray.surface.Surface;
 import ray.surface.SurfaceKind;
+import ray.surface.TriangleSet;
 import ray.testing.StudentTask;
 
 /**
@@ -37,8 +39,9 @@ final class BasicChecks {
 
     /**
      * The tasks of this assignment whose code renders {@code scene}, in their order: the camera, the
-     * ray's color and the group always, each primitive or texture it holds, and the light loops when
-     * it is lit (a task the assignment does not choose ships solved, and is never to blame).
+     * ray's color and the group always, each primitive or texture it holds, the students' tree when a
+     * box or mesh is big enough for one, and the light loops when it is lit (a task the assignment does
+     * not choose ships solved, and is never to blame).
      */
     static Set<StudentTask> tasksOf(Scene scene) {
         Set<String> ids = new HashSet<>(Set.of("camera-rays", "ray-color", "group"));
@@ -101,6 +104,10 @@ final class BasicChecks {
         String id = SurfaceKind.of(surface).taskId;
         if (id != null) {
             ids.add(id);
+        }
+        // A box or mesh big enough for a tree is searched through the students' tree when they write it.
+        if (surface instanceof TriangleSet && ((TriangleSet) surface).hasTree()) {
+            ids.add(Acceleration.STUDENTS_TREE_TASK);
         }
         for (Surface child : surface.children()) {
             addTasksOf(child, ids);

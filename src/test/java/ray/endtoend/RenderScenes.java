@@ -7,10 +7,12 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import ray.accel.Acceleration;
 import ray.assignment.Task;
 import ray.assignment.TaskTable;
 import ray.image.PngWriter;
 import ray.render.PixelKinds;
+import ray.render.RenderPlan;
 import ray.render.RenderResult;
 import ray.render.Renderer;
 import ray.scene.Scene;
@@ -129,7 +131,12 @@ final class RenderScenes {
 
     /** A loaded scene rendered at its full size, as 8-bit pixels (PNG row order). */
     static BufferedImage render(Scene scene) {
-        return PngWriter.toBufferedImage(new Renderer(scene, 0, 0).render().image, scene.getExposure());
+        return PngWriter.toBufferedImage(new Renderer(plan(scene, Acceleration.ofAssignment()), 0).render().image, scene.getExposure());
+    }
+
+    /** A render test's plan: the scene's own, its boxes and meshes searched as {@code acceleration} says. */
+    private static RenderPlan plan(Scene scene, Acceleration acceleration) {
+        return RenderPlan.of(scene).withAcceleration(acceleration);
     }
 
     /** A render as 8-bit pixels (PNG row order) and what each pixel shows in it. */
@@ -142,7 +149,12 @@ final class RenderScenes {
      * for saying what the pixels that differ show.
      */
     static Rendered renderWithKinds(Scene scene) {
-        RenderResult result = new Renderer(scene, 0, 0).renderWithKinds();
+        return renderWithKinds(scene, Acceleration.ofAssignment());
+    }
+
+    /** As {@link #renderWithKinds(Scene)}, its boxes and meshes searched as {@code acceleration} says. */
+    static Rendered renderWithKinds(Scene scene, Acceleration acceleration) {
+        RenderResult result = new Renderer(plan(scene, acceleration), 0).renderWithKinds();
         return new Rendered(PngWriter.toBufferedImage(result.image, scene.getExposure()), result.kinds);
     }
 }

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.Test;
+import ray.accel.Acceleration;
 import ray.image.ImageDiff;
 import ray.image.PngReader;
 import ray.scene.Scene;
@@ -49,6 +50,14 @@ public abstract class RenderTestBase {
         this.scene = scene;
     }
 
+    /**
+     * How the render searches boxes and meshes: through the students' tree when the assignment has
+     * them write it (so that every render test tests it too), else through the framework's.
+     */
+    protected Acceleration acceleration() {
+        return Acceleration.ofAssignment();
+    }
+
     /** The task this class's scenes count toward: the one the table of tasks gives this class. */
     protected StudentTask task() {
         return StudentTask.ofTestClass(getClass());
@@ -77,7 +86,7 @@ public abstract class RenderTestBase {
         BufferedImage reference = PngReader.read(referenceFile);
         // An exception from a student file propagates: StudentTaskRule reports it under the task whose
         // file threw, with the same first line as that task's unit tests, so the summary names it once.
-        RenderScenes.Rendered rendered = RenderScenes.renderWithKinds(loaded);
+        RenderScenes.Rendered rendered = RenderScenes.renderWithKinds(loaded, acceleration());
         BufferedImage yours = rendered.image();
         ImageDiff.Result result = ImageDiff.compare(reference, yours);
         RenderDiffReport.ran(getClass(), scene, result.passed());

@@ -5,6 +5,7 @@ import org.junit.rules.TestRule;
 import org.junit.rules.Timeout;
 import org.junit.runner.Description;
 import org.junit.runners.model.Statement;
+import ray.bvh.BrokenTree;
 
 /**
  * The rule every graded test class uses: a time limit per test (an infinite loop in student code
@@ -173,6 +174,9 @@ public final class StudentTaskRule implements TestRule {
         }
         if (e instanceof VirtualMachineError) {
             return "the Java VM gave up running your code (" + e + ")" + where(e);
+        }
+        if (e instanceof BrokenTree) {
+            return "the framework cannot search with your tree: " + e.getMessage();
         }
         return "your code threw " + e + where(e);
     }
