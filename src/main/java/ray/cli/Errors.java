@@ -11,6 +11,10 @@ final class Errors {
         if (e instanceof SceneException) {
             return e.getMessage();
         }
+        if (e instanceof ray.bvh.BrokenTree) {
+            // What the student's tree code returned, checked by the framework: where the check ran says nothing.
+            return "your tree cannot be searched: " + e.getMessage();
+        }
         String message = e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
         for (StackTraceElement frame : e.getStackTrace()) {
             if (frame.getClassName().startsWith("ray.")) {
