@@ -46,7 +46,7 @@ public class TaskProbesTest {
     /** The presets that together choose every task of the table: each part is the students' under one of them. */
     @Parameters(name = "{0}")
     public static List<Object[]> presets() {
-        return List.of(new Object[] {"course-2017"}, new Object[] {"course-2019"});
+        return List.of(new Object[] {"course-2017"}, new Object[] {"course-2019"}, new Object[] {"course-2019-part2"});
     }
 
     private static Assignment before;
@@ -182,6 +182,12 @@ public class TaskProbesTest {
             String line = TaskProbes.stillStubsLine(EnumSet.of(part));
             assertTrue(line, line.contains(part.file) && line.contains("TODO(Task " + part.task() + ")"));
             assertTrue(line, line.chars().allMatch(c -> c >= ' ' && c < 127));
+        }
+        if (preset.equals("course-2019-part2")) {
+            // The tree's two files, one task: both still stubs name the task.
+            assertEquals("Still stubs: Task 1 (Bounding volume hierarchy). Start with Task 1: the TODO(Task 1) comments in"
+                    + " src/main/java/ray/bvh/BoundingBoxes.java and BvhTree.java (see docs/assignment.md).",
+                    TaskProbes.stillStubsLine(EnumSet.of(Part.BOUNDING_BOXES, Part.BVH_TREE)));
         }
         assumeTrue("the lines below number the tasks as course-2017 does", preset.equals("course-2017"));
         // Numbered as course-2017 numbers them: cameras, ray color, group, sphere, lighting, triangle, textures, cylinder.

@@ -17,6 +17,13 @@ import ray.camera.Camera;
 import ray.camera.OrthographicCamera;
 import ray.camera.PerspectiveCamera;
 import ray.image.Image;
+import ray.accel.Hittable;
+import ray.bvh.BoundingBoxes;
+import ray.bvh.Box;
+import ray.bvh.BrokenTree;
+import ray.bvh.BvhNode;
+import ray.bvh.StudentBvh;
+import ray.math.Bounds;
 import ray.math.Vec3;
 import ray.shading.BeckmannDistribution;
 import ray.shading.Brdf;
@@ -80,7 +87,9 @@ public final class TaskProbes {
         GGX_DISTRIBUTION("GgxDistribution"),
         FRESNEL("Fresnel"),
         MICROFACET_BRDF("MicrofacetBrdf"),
-        CYLINDER("Cylinder");
+        CYLINDER("Cylinder"),
+        BOUNDING_BOXES("BoundingBoxes"),
+        BVH_TREE("BvhTree");
 
         /** Its task's id in the table. */
         public final String taskId;
@@ -155,6 +164,10 @@ public final class TaskProbes {
                     return texture(ClampTexture::new);
                 case CYLINDER:
                     return cylinder();
+                case BOUNDING_BOXES:
+                    return boundingBoxes();
+                case BVH_TREE:
+                    return bvhTree();
                 case LAMBERTIAN:
                     // kd ⊙ I · (n·l) / r² = (0.5, 0.25, 1) · 4 · 1 / 4.
                     return lighting(new Lambertian(), new Vec3(0.5, 0.25, 1));
@@ -386,6 +399,115 @@ public final class TaskProbes {
         return surface("Cylinder.intersect", "the top cap of a cylinder straight below the ray (direction (0, −2, 0))", cylinder, 2,
                 new Ray(new Vec3(0, 3, 0), new Vec3(0, -2, 0)), new Ray(new Vec3(5, -2, 0), new Vec3(-1, 0, 0)),
                 new Ray(new Vec3(0, -2, 0), new Vec3(1, 0, 0)));
+    }
+
+    /**
+     * The box of a triangle and of a sphere, and the slab test of a ray through the cube from −1 to 1
+     * and of one beside it: the stub returns no box and misses every box.
+     */
+    private static Finding boundingBoxes() {
+        BoundingBoxes boxes = new BoundingBoxes();
+        Vec3 a = new Vec3(0, 0, 0);
+        Vec3 b = new Vec3(2, 0, 0);
+        Vec3 c = new Vec3(0, 3, 1);
+        Box triangle = boxes.ofTriangle(a, b, c);
+        Box sphere = boxes.ofSphere(new Vec3(1, 2, 3), 2);
+        Box cube = new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1));
+        boolean through = boxes.hit(cube, ahead());
+        Ray besideRay = new Ray(new Vec3(3, 0, 5), new Vec3(0, 0, -1));
+        boolean beside = boxes.hit(cube, besideRay);
+        boolean stub = triangle == null && sphere == null && !through && !beside;
+        Box triangleBox = new Box(new Vec3(0, 0, 0), new Vec3(2, 3, 1));
+        Box sphereBox = new Box(new Vec3(-1, 0, 1), new Vec3(3, 4, 5));
+        String problem = null;
+        if (!triangleBox.equals(triangle)) {
+            problem = "BoundingBoxes.ofTriangle(" + a + ", " + b + ", " + c + ") returned " + triangle + "; expected " + triangleBox;
+        } else if (!sphereBox.equals(sphere)) {
+            problem = "BoundingBoxes.ofSphere((1.0, 2.0, 3.0), 2.0) returned " + sphere + "; expected " + sphereBox;
+        } else if (!through) {
+            problem = "BoundingBoxes.hit misses " + cube + " for a ray from (0, 0, 5) along −z, straight through it";
+        } else if (beside) {
+            problem = "BoundingBoxes.hit reports a hit on " + cube + " for a ray from (3, 0, 5) along −z, which passes beside it";
+        }
+        return new Finding(stub, problem);
+    }
+
+    /**
+     * Six plates one behind another, hit head on: the students' build over them must give a tree the
+     * framework accepts, and their searches over a tree the framework made (two leaves) must find the
+     * nearest plate and see that something blocks the ray. The stub builds nothing and finds nothing.
+     */
+    private static Finding bvhTree() {
+        double[] depths = {-3, 1, -1, 2, 0, -2};
+        Hittable[] plates = new Hittable[depths.length];
+        Box[] boxes = new Box[depths.length];
+        for (int i = 0; i < depths.length; i++) {
+            plates[i] = new Plate(depths[i]);
+            boxes[i] = new Box(new Vec3(-0.5, -0.5, depths[i]), new Vec3(0.5, 0.5, depths[i]));
+        }
+        Box all = boxes[0];
+        for (Box box : boxes) {
+            all = all.union(box);
+        }
+        BvhNode halves = BvhNode.inner(all, BvhNode.leaf(boxes[0].union(boxes[1]).union(boxes[2]), 0, 3),
+                BvhNode.leaf(boxes[3].union(boxes[4]).union(boxes[5]), 3, 6));
+        StudentBvh.Search search = StudentBvh.withRoot(plates, boxes, halves).search();
+        IntersectionRecord out = new IntersectionRecord();
+        boolean closest = search.closestHit(out, ahead(), null);
+        boolean any = search.anyHit(ahead(), null);
+        String built = null;
+        try {
+            StudentBvh.build(plates, boxes);
+        } catch (BrokenTree e) {
+            built = e.getMessage();
+        }
+        boolean stub = !closest && !any && built != null;
+        String problem = null;
+        if (built != null) {
+            problem = "over six plates one behind another, " + built;
+        } else if (!closest) {
+            problem = "BvhTree.closestHit finds nothing for a ray from (0, 0, 5) along −z through six plates (a tree the framework made of two leaves)";
+        } else if (out.t != 3) {
+            problem = "BvhTree.closestHit finds a plate at t = " + out.t + " for a ray from (0, 0, 5) along −z through six plates; the nearest is at t = 3";
+        } else if (!any) {
+            problem = "BvhTree.anyHit returns false for a ray from (0, 0, 5) along −z through six plates";
+        }
+        return new Finding(stub, problem);
+    }
+
+    /** A unit square facing the z axis at z = {@code depth}: what the tree probe searches. */
+    private static final class Plate implements Hittable {
+        private final double depth;
+
+        Plate(double depth) {
+            this.depth = depth;
+        }
+
+        @Override
+        public boolean intersect(IntersectionRecord out, Ray ray) {
+            if (ray.direction.z == 0) {
+                return false;
+            }
+            double t = (depth - ray.origin.z) / ray.direction.z;
+            Vec3 p = ray.pointAt(t);
+            if (!(ray.start < t && t < ray.end) || Math.abs(p.x) > 0.5 || Math.abs(p.y) > 0.5) {
+                return false;
+            }
+            out.t = t;
+            out.location = p;
+            out.normal = new Vec3(0, 0, 1);
+            return true;
+        }
+
+        @Override
+        public boolean intersectsAny(Ray ray) {
+            return intersect(new IntersectionRecord(), ray);
+        }
+
+        @Override
+        public Bounds bounds() {
+            return new Bounds(-0.5, -0.5, depth, 0.5, 0.5, depth);
+        }
     }
 
     /** From (0, 0, 5) along −z. */

@@ -20,7 +20,7 @@ import ray.testing.StudentTaskRule;
 @Points(2)
 public class BvhRenderTest extends RenderTestBase {
     @Rule
-    public final StudentTaskRule task = StudentTaskRule.of(getClass()).withTimeoutSeconds(TIMEOUT_SECONDS);
+    public final StudentTaskRule task = StudentTaskRule.of(getClass()).withTimeoutSeconds(FORWARDED_SEARCHES_TIMEOUT_SECONDS);
 
     public BvhRenderTest(String scene) {
         super(scene);
