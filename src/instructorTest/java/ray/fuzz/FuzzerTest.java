@@ -90,8 +90,10 @@ public class FuzzerTest {
     @Test
     public void theCorpusIsEveryShippedSceneWithItsMeshesAndTexturesAndNoReferenceRender() {
         Corpus corpus = Corpus.of(Path.of("scenes"));
-        assertEquals(24, corpus.scenes.size());
+        assertEquals(25, corpus.scenes.size());
         assertEquals(java.util.List.of(Path.of("meshes/torus-flat.obj")), corpus.meshes.get(Path.of("mesh-flat.xml")));
+        assertEquals(java.util.List.of(Path.of("meshes/vase.obj"), Path.of("meshes/torus-smooth.obj"), Path.of("meshes/torus-flat.obj")),
+                corpus.meshes.get(Path.of("meshes-and-boxes.xml")));
         assertEquals(java.util.List.of(Path.of("meshes/icosphere-room.obj")),
                 corpus.meshes.get(Path.of("hard/inside-closed-mesh.xml")));
         assertTrue(corpus.meshes.get(Path.of("one-sphere.xml")).isEmpty());

@@ -211,6 +211,7 @@ public class RenderPlanCountersTest {
             Map.entry("group-transforms", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
             Map.entry("mesh-flat", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS)),
             Map.entry("mesh-smooth", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
+            Map.entry("meshes-and-boxes", Set.of(Effect.ACCELERATION, Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR, Effect.TRANSFORMS, Effect.VERTEX_NORMALS)),
             Map.entry("one-sphere-phong", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
             Map.entry("one-sphere", Set.of(Effect.LIGHTING, Effect.SHADOWS)),
             Map.entry("lights-and-shadows", Set.of(Effect.LIGHTING, Effect.SHADOWS, Effect.SPECULAR)),
