@@ -14,6 +14,13 @@ public class ErrorsTest {
                 Errors.oneLine(new BrokenTree("BvhTree.build over 3 primitives: primitive 2 is in no leaf")));
     }
 
+    /** ray1 explore's page says it the same way. */
+    @Test
+    public void theExplorePageNamesItTheSameWay() {
+        BrokenTree broken = new BrokenTree("primitive 0 has no box (null)");
+        assertEquals(Errors.oneLine(broken), ray.inspect.Failure.oneLine(broken));
+    }
+
     @Test
     public void anotherExceptionIsNamedWithWhereTheProjectsCodeThrewIt() {
         String line = Errors.oneLine(new IllegalArgumentException("radius must be positive"));

@@ -11,4 +11,9 @@ public final class BrokenTree extends IllegalStateException {
     public BrokenTree(String message) {
         super(message);
     }
+
+    /** How a command names it to the student, in one line: where the framework's check ran says nothing. */
+    public String inOneLine() {
+        return "your tree cannot be searched: " + getMessage();
+    }
 }

@@ -76,7 +76,9 @@ final class ExploreSession {
         renderError = null;
         long start = System.nanoTime();
         try {
-            RenderResult result = new Renderer(RenderPlan.of(loaded, 0, SamplePattern.GRID), 0).render();
+            // As ray1 render renders it: through the students' tree where they write it.
+            RenderPlan plan = RenderPlan.of(loaded, 0, SamplePattern.GRID).withAcceleration(ray.accel.Acceleration.ofAssignment());
+            RenderResult result = new Renderer(plan, 0).render();
             render = PngWriter.toBufferedImage(result.image, loaded.getExposure());
             renderPng = png(render);
         } catch (RuntimeException | StackOverflowError e) {
