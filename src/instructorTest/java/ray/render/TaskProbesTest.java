@@ -170,6 +170,23 @@ public class TaskProbesTest {
         }
     }
 
+    /**
+     * A tree whose build is written (one leaf over everything, which the framework refuses) and whose
+     * searches are still the stub's is no stub: the probe names the build's broken rule.
+     */
+    @Test
+    public void aTreeWithABrokenBuildIsNoStub() throws Exception {
+        Path halfDone = StubBuild.compile(Map.of(Part.BVH_TREE.file,
+                replace(Part.BVH_TREE, "return null;", "return BvhNode.leaf(boxOf(start, end), start, end);")),
+                FOLDER.getRoot().toPath().resolve("half-done-tree"));
+        try (URLClassLoader loader = StubBuild.loader(List.of(halfDone))) {
+            Object finding = probe(loader, "BVH_TREE");
+            assertEquals(false, finding.getClass().getField("stub").get(finding));
+            String problem = (String) finding.getClass().getField("problem").get(finding);
+            assertTrue(problem, problem.startsWith("over six plates one behind another, BvhTree.build over 6 primitives: "));
+        }
+    }
+
     private static String replace(Part part, String stub, String instead) throws Exception {
         String source = StubBuild.stubOf(part.file);
         assertTrue(part.file + " has no '" + stub + "'", source.contains(stub));

@@ -8,8 +8,16 @@ package ray.bvh;
 public final class BrokenTree extends IllegalStateException {
     private static final long serialVersionUID = 1L;
 
+    /** Whether the build returned no tree at all (null), as the handout's stub does. */
+    public final boolean nothingBuilt;
+
     public BrokenTree(String message) {
+        this(message, false);
+    }
+
+    BrokenTree(String message, boolean nothingBuilt) {
         super(message);
+        this.nothingBuilt = nothingBuilt;
     }
 
     /** How a command names it to the student, in one line: where the framework's check ran says nothing. */

@@ -40,7 +40,7 @@ public final class StudentBvh {
         BvhNode root = tree.build(0, primitives.length);
         String problem = TreeInvariants.firstProblem(root, tree, boxes);
         if (problem != null) {
-            throw new BrokenTree("BvhTree.build over " + primitives.length + " primitives: " + problem);
+            throw new BrokenTree("BvhTree.build over " + primitives.length + " primitives: " + problem, root == null);
         }
         return new StudentBvh(tree, root);
     }

@@ -456,12 +456,14 @@ public final class TaskProbes {
         boolean closest = search.closestHit(out, ahead(), null);
         boolean any = search.anyHit(ahead(), null);
         String built = null;
+        boolean nothingBuilt = false;
         try {
             StudentBvh.build(plates, boxes);
         } catch (BrokenTree e) {
             built = e.getMessage();
+            nothingBuilt = e.nothingBuilt;
         }
-        boolean stub = !closest && !any && built != null;
+        boolean stub = !closest && !any && nothingBuilt;
         String problem = null;
         if (built != null) {
             problem = "over six plates one behind another, " + built;
