@@ -1,5 +1,6 @@
 package ray.cli;
 
+import ray.inspect.Failure;
 import ray.scene.SceneException;
 
 /** One-line descriptions of failures, for users who should not have to read a stack trace. */
@@ -7,19 +8,11 @@ final class Errors {
     private Errors() {
     }
 
+    /** A scene file's error as it is (it names the file and line); anything else as {@link Failure} words it, with where to see more. */
     static String oneLine(Throwable e) {
         if (e instanceof SceneException) {
             return e.getMessage();
         }
-        if (e instanceof ray.bvh.BrokenTree) {
-            return ((ray.bvh.BrokenTree) e).inOneLine();
-        }
-        String message = e.getClass().getSimpleName() + (e.getMessage() != null ? ": " + e.getMessage() : "");
-        for (StackTraceElement frame : e.getStackTrace()) {
-            if (frame.getClassName().startsWith("ray.")) {
-                return message + " (at " + frame.getFileName() + ":" + frame.getLineNumber() + "; --verbose shows the stack trace)";
-            }
-        }
-        return message;
+        return Failure.oneLine(e, "; --verbose shows the stack trace");
     }
 }
